@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Installs every system dependency octocap's build and tests need on a fresh Debian 12 (bookworm).
+# The one place that installs anything; CI and the demo call it. Safe to run twice.
+set -euo pipefail
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+
+# Catch2 v3 (3.7) lives in bookworm-backports; bookworm itself has only the slow-to-compile 2.13 header.
+BACKPORTS=/etc/apt/sources.list.d/octocap-bookworm-backports.list
+if ! grep -rqs "bookworm-backports" /etc/apt/sources.list /etc/apt/sources.list.d/; then
+  echo "deb http://deb.debian.org/debian bookworm-backports main" | $SUDO tee "$BACKPORTS" >/dev/null
+fi
+
+$SUDO apt-get update -q
+$SUDO apt-get install -y -q --no-install-recommends \
+  build-essential cmake ninja-build pkg-config \
+  libeigen3-dev \
+  libtomlplusplus-dev nlohmann-json3-dev libcli11-dev \
+  libopencv-core-dev libopencv-calib3d-dev
+$SUDO apt-get install -y -q --no-install-recommends -t bookworm-backports libcatch2-dev

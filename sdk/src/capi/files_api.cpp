@@ -1,0 +1,151 @@
+// Recordings (OpenPose JSON folders) and motion writers (TRC / CSV).
+#include <cmath>
+#include <limits>
+
+#include "capi/boundary.h"
+#include "capi/handles.h"
+
+using namespace octocap;
+
+extern "C" {
+
+octocap_result_t octocap_recording_open(const char* directory, octocap_layout_t layout_id,
+                                        octocap_recording_t** out) {
+  return capi::guard([&] {
+    capi::require(directory, "directory");
+    capi::require(out, "out");
+    *out = nullptr;
+    if (layout_id != OCTOCAP_LAYOUT_AUTO && octocap_layout_keypoint_count(layout_id) == 0)
+      throw Error(Errc::invalid_argument, "unknown layout");
+    auto rec = std::make_unique<OpenPoseRecording>(directory, static_cast<LayoutId>(layout_id));
+    *out = capi::make_handle<octocap_recording_t>(std::move(rec));
+  });
+}
+
+void octocap_recording_destroy(octocap_recording_t* rec) { capi::destroy_handle(rec); }
+
+octocap_result_t octocap_recording_view_count(const octocap_recording_t* rec, uint32_t* out) {
+  return capi::guard([&] {
+    capi::checked(rec, "recording");
+    capi::require(out, "out");
+    *out = static_cast<uint32_t>(rec->recording->view_count());
+  });
+}
+
+octocap_result_t octocap_recording_frame_count(const octocap_recording_t* rec, uint32_t* out) {
+  return capi::guard([&] {
+    capi::checked(rec, "recording");
+    capi::require(out, "out");
+    *out = static_cast<uint32_t>(rec->recording->frame_count());
+  });
+}
+
+octocap_result_t octocap_recording_layout(const octocap_recording_t* rec, octocap_layout_t* out) {
+  return capi::guard([&] {
+    capi::checked(rec, "recording");
+    capi::require(out, "out");
+    *out = static_cast<octocap_layout_t>(rec->recording->layout());
+  });
+}
+
+octocap_result_t octocap_recording_view_name(const octocap_recording_t* rec, uint32_t view, char* out,
+                                             uint32_t capacity) {
+  return capi::guard([&] {
+    capi::checked(rec, "recording");
+    capi::require(out, "out");
+    if (view >= rec->recording->view_count()) throw Error(Errc::invalid_argument, "view index out of range");
+    const std::string& name = rec->recording->view_name(view);
+    if (capacity < name.size() + 1)
+      throw Error(Errc::buffer_too_small, "view name needs " + std::to_string(name.size() + 1) + " bytes");
+    capi::copy_name(out, capacity, name);
+  });
+}
+
+octocap_result_t octocap_recording_read_frame(octocap_recording_t* rec, uint32_t frame,
+                                              octocap_keypoint2d_t* keypoints, uint32_t capacity,
+                                              uint32_t* keypoint_count, uint32_t* people_per_view,
+                                              uint32_t view_count) {
+  return capi::guard([&] {
+    capi::checked(rec, "recording");
+    capi::require(keypoint_count, "keypoint_count");
+    const auto& r = *rec->recording;
+    if (view_count != r.view_count())
+      throw Error(Errc::camera_mismatch, "view_count is " + std::to_string(view_count) + ", the recording has " +
+                                             std::to_string(r.view_count()) + " views");
+    const auto people = r.read_frame(frame);
+    size_t total = 0;
+    for (const auto& v : people)
+      for (const auto& p : v) total += p.size();
+    *keypoint_count = static_cast<uint32_t>(total);
+    if (people_per_view)
+      for (size_t v = 0; v < people.size(); ++v) people_per_view[v] = static_cast<uint32_t>(people[v].size());
+    if (!keypoints) return;
+    capi::require(people_per_view, "people_per_view");
+    if (capacity < total)
+      throw Error(Errc::buffer_too_small, "frame " + std::to_string(frame) + " needs " + std::to_string(total) +
+                                              " keypoints, capacity is " + std::to_string(capacity));
+    size_t o = 0;
+    for (const auto& v : people)
+      for (const auto& p : v)
+        for (const auto& k : p)
+          keypoints[o++] = {static_cast<float>(k.x), static_cast<float>(k.y), static_cast<float>(k.confidence)};
+  });
+}
+
+octocap_result_t octocap_motion_writer_create(const char* path, octocap_motion_format_t format,
+                                              octocap_layout_t layout_id, octocap_up_axis_t up_axis, double rate_hz,
+                                              octocap_motion_writer_t** out) {
+  return capi::guard([&] {
+    capi::require(path, "path");
+    capi::require(out, "out");
+    *out = nullptr;
+    if (format != OCTOCAP_MOTION_TRC && format != OCTOCAP_MOTION_CSV)
+      throw Error(Errc::invalid_argument, "unknown motion format");
+    if (octocap_layout_keypoint_count(layout_id) == 0)
+      throw Error(Errc::invalid_argument, "layout must be a concrete layout (not AUTO)");
+    if (!(rate_hz > 0) || !std::isfinite(rate_hz)) throw Error(Errc::invalid_argument, "rate_hz must be > 0");
+    MotionTrack track;
+    for (const char* n : layout(static_cast<LayoutId>(layout_id)).keypoints) track.markers.emplace_back(n);
+    track.rate_hz = rate_hz;
+    *out = capi::make_handle<octocap_motion_writer_t>(std::string(path), format, up_axis == OCTOCAP_UP_Z,
+                                                      std::move(track));
+  });
+}
+
+octocap_result_t octocap_motion_writer_add_frame(octocap_motion_writer_t* w, const octocap_session_t* s) {
+  return capi::guard([&] {
+    capi::checked(w, "motion writer");
+    capi::checked(s, "session");
+    const Session& session = *s->session;
+    if (!session.has_result()) throw Error(Errc::no_result, "the session has not solved a frame yet");
+    if (session.keypoints().size() != w->track.markers.size())
+      throw Error(Errc::invalid_argument, "the session's layout differs from the writer's");
+    MarkerFrame f;
+    for (const auto& k : session.keypoints())
+      f.push_back(k.valid ? k.position : Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));
+    w->track.frames.push_back(std::move(f));
+  });
+}
+
+octocap_result_t octocap_motion_writer_add_empty_frame(octocap_motion_writer_t* w) {
+  return capi::guard([&] {
+    capi::checked(w, "motion writer");
+    w->track.frames.emplace_back(w->track.markers.size(),
+                                 Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));
+  });
+}
+
+octocap_result_t octocap_motion_writer_close(octocap_motion_writer_t* w) {
+  if (!w) return OCTOCAP_OK;
+  const octocap_result_t r = capi::guard([&] {
+    capi::checked(w, "motion writer");
+    if (w->format == OCTOCAP_MOTION_TRC)
+      write_trc(w->path, w->track, w->z_up);
+    else
+      write_csv(w->path, w->track);
+  });
+  if (r != OCTOCAP_ERROR_INVALID_HANDLE) capi::destroy_handle(w);
+  return r;
+}
+
+}  // extern "C"

@@ -1,0 +1,268 @@
+// Session handles: config, create/destroy, solve, per-frame queries.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "capi/boundary.h"
+#include "capi/handles.h"
+#include "rig/engine_frames.h"
+
+using namespace octocap;
+
+namespace {
+
+SessionConfig from_c(const octocap_session_config_t& c) {
+  if (c.struct_size != sizeof(octocap_session_config_t))
+    throw Error(Errc::struct_size, "octocap_session_config_t.struct_size is " + std::to_string(c.struct_size) +
+                                       ", this library expects " + std::to_string(sizeof(octocap_session_config_t)) +
+                                       " (call octocap_session_config_init first)");
+  SessionConfig s;
+  if (octocap_layout_keypoint_count(c.layout) == 0)
+    throw Error(Errc::invalid_argument, "config.layout must be a concrete layout (not AUTO)");
+  s.layout = static_cast<LayoutId>(c.layout);
+  if (c.method != OCTOCAP_METHOD_SUBDIVISION && c.method != OCTOCAP_METHOD_TRIANGULATION)
+    throw Error(Errc::invalid_argument, "config.method is not a known method");
+  s.method = static_cast<Method>(c.method);
+  if (c.filter != OCTOCAP_FILTER_NONE && c.filter != OCTOCAP_FILTER_ONE_EURO)
+    throw Error(Errc::invalid_argument, "config.filter is not a known filter");
+  s.filter = c.filter == OCTOCAP_FILTER_ONE_EURO;
+  if (c.up_axis != OCTOCAP_UP_Y && c.up_axis != OCTOCAP_UP_Z)
+    throw Error(Errc::invalid_argument, "config.up_axis must be Y or Z");
+  s.z_up = c.up_axis == OCTOCAP_UP_Z;
+  const float floats[] = {c.delta_m, c.pixel_tolerance, c.min_confidence, c.outlier_threshold_px,
+                          c.filter_min_cutoff_hz, c.filter_beta, c.volume_min[0], c.volume_min[1],
+                          c.volume_min[2], c.volume_max[0], c.volume_max[1], c.volume_max[2]};
+  for (float f : floats) capi::require_finite(f, "a config value");
+  if (!(c.delta_m > 0)) throw Error(Errc::invalid_argument, "config.delta_m must be > 0");
+  if (c.pixel_tolerance < 0) throw Error(Errc::invalid_argument, "config.pixel_tolerance must be >= 0");
+  if (c.max_candidates < 1) throw Error(Errc::invalid_argument, "config.max_candidates must be >= 1");
+  if (!(c.outlier_threshold_px > 0)) throw Error(Errc::invalid_argument, "config.outlier_threshold_px must be > 0");
+  if (!(c.filter_min_cutoff_hz > 0) || c.filter_beta < 0)
+    throw Error(Errc::invalid_argument, "config.filter_min_cutoff_hz must be > 0 and filter_beta >= 0");
+  s.sigma = static_cast<int>(std::min<uint32_t>(c.sigma, 1000));
+  s.min_views = static_cast<int>(std::min<uint32_t>(c.min_views, 1000));
+  s.delta = c.delta_m;
+  s.pixel_tolerance = c.pixel_tolerance;
+  s.max_candidates = static_cast<int>(std::min<uint32_t>(c.max_candidates, 100000));
+  s.min_confidence = c.min_confidence;
+  s.outlier_threshold_px = c.outlier_threshold_px;
+  const Eigen::Vector3d lo(c.volume_min[0], c.volume_min[1], c.volume_min[2]);
+  const Eigen::Vector3d hi(c.volume_max[0], c.volume_max[1], c.volume_max[2]);
+  if (lo != hi) {
+    if ((hi.array() <= lo.array()).any())
+      throw Error(Errc::invalid_argument, "config.volume_max must exceed volume_min on every axis");
+    s.volume = Eigen::AlignedBox3d(lo, hi);
+  }
+  s.filter_min_cutoff = c.filter_min_cutoff_hz;
+  s.filter_beta = c.filter_beta;
+  s.threads = std::min<uint32_t>(c.worker_threads, 256);
+  return s;
+}
+
+const Session& result_of(const octocap_session_t* s) {
+  capi::checked(s, "session");
+  if (!s->session->has_result()) throw Error(Errc::no_result, "no frame has been solved yet");
+  return *s->session;
+}
+
+void to_c(const PointResult& r, octocap_joint_t& out) {
+  out = octocap_joint_t{};
+  if (!r.valid) return;
+  for (int k = 0; k < 3; ++k) out.position[k] = static_cast<float>(r.position[k]);
+  out.confidence = static_cast<float>(r.confidence);
+  out.reprojection_error_px = static_cast<float>(r.reprojection_error_px);
+  out.views_used = r.views_used;
+  out.valid = 1;
+}
+
+// Two-call pattern: out == NULL asks for the count; a short buffer is an error that still reports it.
+template <class Fill>
+void fill_array(uint32_t needed, void* out, uint32_t capacity, uint32_t* count, Fill&& fill) {
+  capi::require(count, "count");
+  *count = needed;
+  if (!out) return;
+  if (capacity < needed)
+    throw Error(Errc::buffer_too_small, "capacity " + std::to_string(capacity) + " < " + std::to_string(needed));
+  fill();
+}
+
+CoordFrame frame_of(octocap_coord_frame_t f) {
+  if (f != OCTOCAP_FRAME_RIG && f != OCTOCAP_FRAME_UNITY && f != OCTOCAP_FRAME_GODOT)
+    throw Error(Errc::invalid_argument, "unknown coordinate frame");
+  return static_cast<CoordFrame>(f);
+}
+
+octocap_quat_t quat_c(const Eigen::Quaterniond& q) {
+  return {static_cast<float>(q.x()), static_cast<float>(q.y()), static_cast<float>(q.z()), static_cast<float>(q.w())};
+}
+
+}  // namespace
+
+extern "C" {
+
+void octocap_session_config_init(octocap_session_config_t* c) {
+  if (!c) return;
+  *c = octocap_session_config_t{};
+  c->struct_size = sizeof(octocap_session_config_t);
+  c->layout = OCTOCAP_LAYOUT_BODY_25;
+  c->method = OCTOCAP_METHOD_SUBDIVISION;
+  c->filter = OCTOCAP_FILTER_ONE_EURO;
+  c->up_axis = OCTOCAP_UP_Y;
+  c->sigma = 0;
+  c->min_views = 2;
+  c->delta_m = 0.01f;
+  c->pixel_tolerance = 4.0f;
+  c->max_candidates = 48;
+  c->min_confidence = 0.3f;
+  c->outlier_threshold_px = 15.0f;
+  c->filter_min_cutoff_hz = 1.5f;
+  c->filter_beta = 5.0f;
+  c->worker_threads = 0;
+}
+
+octocap_result_t octocap_session_create(const octocap_session_config_t* cfg, const octocap_calibration_t* calib,
+                                        octocap_session_t** out) {
+  return capi::guard([&] {
+    capi::require(out, "out");
+    *out = nullptr;
+    capi::require(cfg, "cfg");
+    capi::checked(calib, "calibration");
+    const SessionConfig config = from_c(*cfg);
+    auto session = std::make_unique<Session>(config, calib->cameras);
+    *out = capi::make_handle<octocap_session_t>(std::move(session));
+  });
+}
+
+void octocap_session_destroy(octocap_session_t* s) { capi::destroy_handle(s); }
+
+octocap_result_t octocap_session_solve_keypoints(octocap_session_t* s, const octocap_keypoint2d_t* keypoints,
+                                                 const uint32_t* people_per_view, uint32_t view_count,
+                                                 int64_t timestamp_us) {
+  return capi::guard([&] {
+    capi::checked(s, "session");
+    Session& session = *s->session;
+    const size_t cams = session.calibration().size();
+    if (view_count != cams)
+      throw Error(Errc::camera_mismatch, "view_count is " + std::to_string(view_count) +
+                                             ", the calibration has " + std::to_string(cams) + " cameras");
+    const size_t K = session.keypoint_layout().keypoints.size();
+    size_t total_people = 0;
+    for (uint32_t v = 0; v < view_count; ++v) {
+      const uint32_t n = people_per_view ? people_per_view[v] : 1;
+      if (n > 64) throw Error(Errc::invalid_argument, "more than 64 people in view " + std::to_string(v));
+      total_people += n;
+    }
+    if (total_people > 0) capi::require(keypoints, "keypoints");
+    std::vector<std::vector<Person2D>> people(view_count);
+    size_t offset = 0;
+    for (uint32_t v = 0; v < view_count; ++v) {
+      const uint32_t n = people_per_view ? people_per_view[v] : 1;
+      for (uint32_t p = 0; p < n; ++p) {
+        Person2D person(K);
+        for (size_t k = 0; k < K; ++k) {
+          const octocap_keypoint2d_t& kp = keypoints[offset++];
+          // NaN/inf or a (0,0) OpenPose placeholder is "not detected", not an error: detectors emit them.
+          const bool ok = std::isfinite(kp.x) && std::isfinite(kp.y) && std::isfinite(kp.confidence) &&
+                          kp.confidence > 0 && !(kp.x == 0 && kp.y == 0);
+          person[k] = ok ? Keypoint2D{kp.x, kp.y, kp.confidence} : Keypoint2D{};
+        }
+        people[v].push_back(std::move(person));
+      }
+    }
+    session.solve(people, timestamp_us);
+  });
+}
+
+octocap_result_t octocap_session_reset(octocap_session_t* s) {
+  return capi::guard([&] { capi::checked(s, "session")->session->reset(); });
+}
+
+octocap_result_t octocap_session_get_frame_info(const octocap_session_t* s, octocap_frame_info_t* out) {
+  return capi::guard([&] {
+    const Session& session = result_of(s);
+    capi::require(out, "out");
+    const FrameInfo& f = session.frame_info();
+    *out = octocap_frame_info_t{};
+    out->frame_index = f.frame_index;
+    out->timestamp_us = f.timestamp_us;
+    out->keypoints_solved = f.keypoints_solved;
+    out->keypoints_total = f.keypoints_total;
+    out->mean_reprojection_error_px = static_cast<float>(f.mean_reprojection_error_px);
+    out->views_with_person = f.views_with_person;
+    out->solve_ms = static_cast<float>(f.solve_ms);
+  });
+}
+
+octocap_result_t octocap_session_get_keypoints3d(const octocap_session_t* s, octocap_joint_t* out,
+                                                 uint32_t capacity, uint32_t* count) {
+  return capi::guard([&] {
+    const Session& session = result_of(s);
+    const auto& kps = session.keypoints();
+    fill_array(static_cast<uint32_t>(kps.size()), out, capacity, count, [&] {
+      for (size_t k = 0; k < kps.size(); ++k) to_c(kps[k], out[k]);
+    });
+  });
+}
+
+octocap_result_t octocap_session_get_joints(const octocap_session_t* s, octocap_joint_t* out, uint32_t capacity,
+                                            uint32_t* count) {
+  return capi::guard([&] {
+    const Session& session = result_of(s);
+    fill_array(kJointCount, out, capacity, count, [&] {
+      for (int j = 0; j < kJointCount; ++j) to_c(session.joints()[j], out[j]);
+    });
+  });
+}
+
+octocap_result_t octocap_session_get_selected_people(const octocap_session_t* s, int32_t* out, uint32_t capacity,
+                                                     uint32_t* count) {
+  return capi::guard([&] {
+    const Session& session = result_of(s);
+    const auto& sel = session.selected_people();
+    fill_array(static_cast<uint32_t>(sel.size()), out, capacity, count, [&] {
+      for (size_t v = 0; v < sel.size(); ++v) out[v] = sel[v];
+    });
+  });
+}
+
+octocap_result_t octocap_session_get_bones(const octocap_session_t* s, octocap_coord_frame_t frame,
+                                           octocap_bone_pose_t* out, uint32_t capacity, uint32_t* count) {
+  return capi::guard([&] {
+    const Session& session = result_of(s);
+    const CoordFrame cf = frame_of(frame);
+    fill_array(kBoneCount, out, capacity, count, [&] {
+      for (int b = 0; b < kBoneCount; ++b) {
+        const BonePose& p = session.bones()[b];
+        octocap_bone_pose_t& o = out[b];
+        o = octocap_bone_pose_t{};
+        o.local_rotation = quat_c(convert_rotation(p.local, cf));
+        o.global_rotation = quat_c(convert_rotation(p.global, cf));
+        const Eigen::Vector3d h = convert_position(p.head, cf);
+        for (int k = 0; k < 3; ++k) o.head_position[k] = static_cast<float>(h[k]);
+        o.length_m = static_cast<float>(p.length);
+        o.valid = p.valid ? 1 : 0;
+      }
+    });
+  });
+}
+
+octocap_result_t octocap_session_get_bone_rotation(const octocap_session_t* s, uint32_t bone,
+                                                   octocap_coord_frame_t frame, octocap_quat_t* out) {
+  return capi::guard([&] {
+    const Session& session = result_of(s);
+    capi::require(out, "out");
+    if (bone >= static_cast<uint32_t>(kBoneCount))
+      throw Error(Errc::invalid_argument, "bone index " + std::to_string(bone) + " out of range");
+    *out = quat_c(convert_rotation(session.bones()[bone].local, frame_of(frame)));
+  });
+}
+
+octocap_result_t octocap_session_definition_counter(const octocap_session_t* s, uint32_t* out) {
+  return capi::guard([&] {
+    capi::checked(s, "session");
+    capi::require(out, "out");
+    *out = s->definition_counter;
+  });
+}
+
+}  // extern "C"

@@ -1,0 +1,31 @@
+// Keypoint layouts as data tables: names, order, and how each maps onto the paper's 15-joint skeleton.
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+#include "core/skeleton.h"
+
+namespace octocap {
+
+enum class LayoutId : int { automatic = 0, body25 = 1, body25b = 2, coco17 = 3, halpe26 = 4 };
+
+struct KeypointLayout {
+  LayoutId id;
+  const char* name;
+  std::vector<const char*> keypoints;
+  // For each skeleton joint: alternatives tried in order; an alternative is a set of keypoints whose mean is
+  // the joint, used only when all of them are present (e.g. head = mean of the ears, else the nose).
+  std::array<std::vector<std::vector<int>>, kJointCount> joint_sources;
+  // Left/right keypoint pairs, for detecting and repairing swapped detections.
+  std::vector<std::pair<int, int>> mirror_pairs;
+};
+
+const KeypointLayout& layout(LayoutId id);  // throws Error for automatic/unknown ids
+const std::vector<LayoutId>& all_layouts();
+// AUTO resolution from a keypoint count: 25 -> BODY_25, 17 -> COCO_17, 26 -> HALPE_26.
+LayoutId layout_for_count(size_t keypoint_count);
+// Case-insensitive; accepts "COCO" for COCO_17, "BODY25B" without underscore, etc.
+bool layout_from_name(const std::string& name, LayoutId* out);
+
+}  // namespace octocap

@@ -1,0 +1,43 @@
+#include "core/skeleton.h"
+
+namespace octocap {
+
+const std::array<const char*, kJointCount>& joint_names() {
+  static const std::array<const char*, kJointCount> names = {
+      "head", "neck", "r_shoulder", "r_elbow", "r_hand", "l_shoulder", "l_elbow", "l_hand",
+      "r_hip", "r_knee", "r_foot", "l_hip", "l_knee", "l_foot", "root"};
+  return names;
+}
+
+const std::array<BoneDef, kBoneCount>& bone_table() {
+  // METHOD.md's bones, plus ROOT (global pelvis orientation) so that the legs hang from the pelvis, not the torso.
+  static const std::array<BoneDef, kBoneCount> bones = {{
+      {"root", -1, kRoot, kNeck},
+      {"torso", kBoneRoot, kRoot, kNeck},
+      {"head", kBoneTorso, kNeck, kHead},
+      {"r_shoulder", kBoneTorso, kNeck, kRShoulder},
+      {"r_upper_arm", kBoneRShoulder, kRShoulder, kRElbow},
+      {"r_lower_arm", kBoneRUpperArm, kRElbow, kRHand},
+      {"l_shoulder", kBoneTorso, kNeck, kLShoulder},
+      {"l_upper_arm", kBoneLShoulder, kLShoulder, kLElbow},
+      {"l_lower_arm", kBoneLUpperArm, kLElbow, kLHand},
+      {"r_upper_leg", kBoneRoot, kRHip, kRKnee},
+      {"r_lower_leg", kBoneRUpperLeg, kRKnee, kRFoot},
+      {"l_upper_leg", kBoneRoot, kLHip, kLKnee},
+      {"l_lower_leg", kBoneLUpperLeg, kLKnee, kLFoot},
+  }};
+  return bones;
+}
+
+const std::array<Eigen::Vector3d, kBoneCount>& tpose_directions() {
+  // The four template frame kinds of the paper: up (torso, head), left (+X), right (-X), down (legs).
+  static const std::array<Eigen::Vector3d, kBoneCount> dirs = {
+      Eigen::Vector3d(0, 1, 0),  Eigen::Vector3d(0, 1, 0),  Eigen::Vector3d(0, 1, 0),
+      Eigen::Vector3d(-1, 0, 0), Eigen::Vector3d(-1, 0, 0), Eigen::Vector3d(-1, 0, 0),
+      Eigen::Vector3d(1, 0, 0),  Eigen::Vector3d(1, 0, 0),  Eigen::Vector3d(1, 0, 0),
+      Eigen::Vector3d(0, -1, 0), Eigen::Vector3d(0, -1, 0), Eigen::Vector3d(0, -1, 0),
+      Eigen::Vector3d(0, -1, 0)};
+  return dirs;
+}
+
+}  // namespace octocap

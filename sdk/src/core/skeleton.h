@@ -1,0 +1,36 @@
+// The paper's skeleton (14 joints + root), its bones and the T-pose template.
+#pragma once
+#include <Eigen/Core>
+#include <array>
+
+namespace octocap {
+
+constexpr int kJointCount = 15;
+constexpr int kBoneCount = 13;
+
+enum Joint : int {
+  kHead = 0, kNeck, kRShoulder, kRElbow, kRHand, kLShoulder, kLElbow, kLHand,
+  kRHip, kRKnee, kRFoot, kLHip, kLKnee, kLFoot, kRoot
+};
+
+enum Bone : int {
+  kBoneRoot = 0, kBoneTorso, kBoneHead, kBoneRShoulder, kBoneRUpperArm, kBoneRLowerArm,
+  kBoneLShoulder, kBoneLUpperArm, kBoneLLowerArm, kBoneRUpperLeg, kBoneRLowerLeg,
+  kBoneLUpperLeg, kBoneLLowerLeg
+};
+
+struct BoneDef {
+  const char* name;
+  int parent;  // parent bone, -1 for the root
+  int head;    // joint the bone starts at
+  int tail;    // joint it ends at (for the root: the neck, which fixes its up axis)
+};
+
+const std::array<const char*, kJointCount>& joint_names();
+const std::array<BoneDef, kBoneCount>& bone_table();
+
+// The T-pose template in the rig frame (right-handed, Y up, facing +Z; the character's left is +X).
+// Rest directions of every bone, unit length.
+const std::array<Eigen::Vector3d, kBoneCount>& tpose_directions();
+
+}  // namespace octocap

@@ -1,0 +1,29 @@
+// 3D keypoint tracks on disk: TRC (OpenSim / Pose2Sim) and CSV.
+#pragma once
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+namespace octocap {
+
+// One frame: a position per marker; NaN where the marker was not solved.
+using MarkerFrame = std::vector<Eigen::Vector3d>;
+
+struct MotionTrack {
+  std::vector<std::string> markers;
+  std::vector<MarkerFrame> frames;
+  double rate_hz = 30.0;
+};
+
+// TRC as OpenSim reads it (Y up, metres). When `z_up` the positions are turned (x, y, z) -> (y, z, x),
+// Pose2Sim's zup2yup, so a Z-up lab world stands upright in OpenSim.
+void write_trc(const std::string& path, const MotionTrack& track, bool z_up);
+// `frame,NAME_x,NAME_y,NAME_z,...`, positions as given (the calibration's world), empty cells when missing.
+void write_csv(const std::string& path, const MotionTrack& track);
+// Reads a TRC (positions as stored in the file; mm files are converted to metres).
+MotionTrack read_trc(const std::string& path);
+
+// The rotation a Z-up world gets to become Y up: (x, y, z) -> (y, z, x).
+inline Eigen::Vector3d zup_to_yup(const Eigen::Vector3d& p) { return {p.y(), p.z(), p.x()}; }
+
+}  // namespace octocap

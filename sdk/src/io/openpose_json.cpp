@@ -1,0 +1,105 @@
+#include "io/openpose_json.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "core/error.h"
+
+namespace fs = std::filesystem;
+
+namespace octocap {
+
+std::vector<Person2D> read_openpose_file(const std::string& path, size_t keypoint_count) {
+  std::ifstream in(path);
+  if (!in) throw Error(Errc::io, path + ": cannot open keypoint file");
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw Error(Errc::parse, path + ": malformed JSON: " + e.what());
+  }
+  if (!doc.is_object() || !doc.contains("people") || !doc["people"].is_array())
+    throw Error(Errc::parse, path + ": not OpenPose JSON (no 'people' array)");
+  std::vector<Person2D> people;
+  size_t index = 0;
+  for (const auto& p : doc["people"]) {
+    const std::string where = path + ": people[" + std::to_string(index++) + "]";
+    if (!p.is_object() || !p.contains("pose_keypoints_2d") || !p["pose_keypoints_2d"].is_array())
+      throw Error(Errc::parse, where + ": no 'pose_keypoints_2d' array");
+    const auto& arr = p["pose_keypoints_2d"];
+    if (arr.empty()) continue;  // OpenPose writes empty arrays for people it dropped
+    if (arr.size() % 3 != 0)
+      throw Error(Errc::parse, where + ": 'pose_keypoints_2d' has " + std::to_string(arr.size()) +
+                                   " numbers, not a multiple of 3 (x, y, confidence)");
+    const size_t n = arr.size() / 3;
+    const size_t expected = keypoint_count ? keypoint_count : (people.empty() ? n : people.front().size());
+    if (n != expected)
+      throw Error(Errc::parse, where + ": has " + std::to_string(n) + " keypoints, the layout has " +
+                                   std::to_string(expected));
+    Person2D person(n);
+    for (size_t k = 0; k < n; ++k) {
+      double v[3];
+      for (int c = 0; c < 3; ++c) {
+        const auto& e = arr[3 * k + c];
+        if (!e.is_number()) throw Error(Errc::parse, where + ": keypoint " + std::to_string(k) + " is not numeric");
+        v[c] = e.get<double>();
+      }
+      if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) v[2] = 0;
+      // OpenPose marks an undetected keypoint as (0, 0, 0).
+      if (v[0] == 0 && v[1] == 0) v[2] = 0;
+      person[k] = {v[0], v[1], v[2]};
+    }
+    people.push_back(std::move(person));
+  }
+  return people;
+}
+
+OpenPoseRecording::OpenPoseRecording(const std::string& directory, LayoutId layout_id) : layout_(layout_id) {
+  std::error_code ec;
+  if (!fs::is_directory(directory, ec)) throw Error(Errc::io, directory + ": not a directory");
+  std::vector<fs::path> dirs;
+  for (const auto& e : fs::directory_iterator(directory, ec))
+    if (e.is_directory()) dirs.push_back(e.path());
+  std::sort(dirs.begin(), dirs.end());
+  for (const auto& d : dirs) {
+    std::vector<std::string> files;
+    for (const auto& e : fs::directory_iterator(d, ec))
+      if (e.is_regular_file() && e.path().extension() == ".json") files.push_back(e.path().string());
+    if (files.empty()) continue;  // not a camera folder
+    std::sort(files.begin(), files.end());
+    views_.push_back(std::move(files));
+    view_names_.push_back(d.filename().string());
+  }
+  if (views_.empty())
+    throw Error(Errc::io, directory + ": no camera sub-folder holding OpenPose .json files");
+  frame_count_ = views_.front().size();
+  for (const auto& v : views_) frame_count_ = std::min(frame_count_, v.size());
+  if (layout_ == LayoutId::automatic) {
+    for (size_t f = 0; f < frame_count_ && layout_ == LayoutId::automatic; ++f) {
+      for (const auto& v : views_) {
+        const auto people = read_openpose_file(v[f], 0);
+        if (!people.empty()) {
+          layout_ = layout_for_count(people.front().size());
+          break;
+        }
+      }
+    }
+    if (layout_ == LayoutId::automatic)
+      throw Error(Errc::parse, directory + ": no person in any file, cannot detect the keypoint layout");
+  }
+}
+
+std::vector<std::vector<Person2D>> OpenPoseRecording::read_frame(size_t frame) const {
+  if (frame >= frame_count_)
+    throw Error(Errc::invalid_argument, "frame " + std::to_string(frame) + " out of range (recording has " +
+                                            std::to_string(frame_count_) + ")");
+  const size_t n = octocap::layout(layout_).keypoints.size();
+  std::vector<std::vector<Person2D>> out;
+  for (const auto& v : views_) out.push_back(read_openpose_file(v[frame], n));
+  return out;
+}
+
+}  // namespace octocap

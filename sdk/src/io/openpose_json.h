@@ -1,0 +1,37 @@
+// OpenPose JSON keypoints: one file per frame and camera, `people[].pose_keypoints_2d` = x, y, c triples.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/layout.h"
+
+namespace octocap {
+
+struct Keypoint2D {
+  double x = 0, y = 0, confidence = 0;
+};
+using Person2D = std::vector<Keypoint2D>;
+
+// Every person of one file. keypoint_count 0 accepts any count (all people must agree), else it is enforced.
+// Throws Error(io / parse) naming the file.
+std::vector<Person2D> read_openpose_file(const std::string& path, size_t keypoint_count);
+
+// A Pose2Sim-style folder: one sub-folder per camera (sorted by name), frames = files sorted by name.
+class OpenPoseRecording {
+ public:
+  OpenPoseRecording(const std::string& directory, LayoutId layout);
+  size_t view_count() const { return views_.size(); }
+  size_t frame_count() const { return frame_count_; }
+  LayoutId layout() const { return layout_; }
+  const std::string& view_name(size_t v) const { return view_names_[v]; }
+  // people[view] for one frame.
+  std::vector<std::vector<Person2D>> read_frame(size_t frame) const;
+
+ private:
+  std::vector<std::vector<std::string>> views_;  // file paths per view
+  std::vector<std::string> view_names_;
+  size_t frame_count_ = 0;
+  LayoutId layout_;
+};
+
+}  // namespace octocap

@@ -1,0 +1,169 @@
+#include "pipeline/session.h"
+
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "core/error.h"
+#include "io/motion_files.h"
+#include "solve/person_select.h"
+#include "solve/subdivision.h"
+#include "solve/triangulation.h"
+#include "solve/volume.h"
+
+namespace octocap {
+
+Session::Session(const SessionConfig& config, Calibration calib)
+    : config_(config), calib_(std::move(calib)), layout_(&layout(config.layout)) {
+  const int cams = static_cast<int>(calib_.size());
+  if (cams < 2) throw Error(Errc::not_enough_views, "a session needs at least 2 cameras, the calibration has " +
+                                                        std::to_string(cams));
+  if (cams > 64) throw Error(Errc::invalid_argument, "at most 64 cameras are supported");
+  if (config_.min_views < 2 || config_.min_views > cams)
+    throw Error(Errc::invalid_argument, "min_views must be between 2 and the camera count (" +
+                                            std::to_string(cams) + "), is " + std::to_string(config_.min_views));
+  sigma_ = config_.sigma > 0 ? config_.sigma : std::max(2, cams - 1);
+  if (sigma_ > cams)
+    throw Error(Errc::invalid_argument, "sigma (" + std::to_string(sigma_) + ") exceeds the camera count (" +
+                                            std::to_string(cams) + ")");
+  volume_ = config_.volume;
+  if (volume_.isEmpty() || volume_.volume() <= 0) {
+    volume_ = derive_capture_volume(calib_);
+    if (volume_.isEmpty())
+      throw Error(Errc::invalid_argument, "the cameras share no field of view; give the capture volume explicitly");
+  }
+  pool_ = std::make_unique<WorkerPool>(config_.threads);
+  const size_t K = layout_->keypoints.size();
+  filters_.assign(K, OneEuroFilter3(config_.filter_min_cutoff, config_.filter_beta));
+  keypoints_.assign(K, PointResult{});
+}
+
+void Session::reset() {
+  for (auto& f : filters_) f.reset();
+  raw_previous_.clear();
+  last_timestamp_us_ = 0;
+  info_ = FrameInfo{};
+  clear_frame();
+}
+
+void Session::clear_frame() {
+  keypoints_.assign(layout_->keypoints.size(), PointResult{});
+  joints_.fill(PointResult{});
+  bones_ = SkeletonPose{};
+}
+
+PointResult Session::solve_keypoint(const std::vector<ViewRay>& rays) const {
+  if (config_.method == Method::triangulation) {
+    return solve_triangulation(calib_, rays, {config_.min_views, config_.outlier_threshold_px});
+  }
+  SubdivisionParams p;
+  p.sigma = sigma_;
+  p.min_views = config_.min_views;
+  p.delta = config_.delta;
+  p.pixel_tolerance = config_.pixel_tolerance;
+  p.max_candidates = config_.max_candidates;
+  p.volume = volume_;
+  return solve_subdivision(calib_, rays, p);
+}
+
+void Session::solve(const std::vector<std::vector<Person2D>>& people, int64_t timestamp_us) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const size_t V = calib_.size(), K = layout_->keypoints.size();
+  if (people.size() != V)
+    throw Error(Errc::camera_mismatch, "got " + std::to_string(people.size()) + " views, the calibration has " +
+                                           std::to_string(V) + " cameras");
+  for (size_t v = 0; v < V; ++v)
+    for (const Person2D& p : people[v])
+      if (p.size() != K)
+        throw Error(Errc::invalid_argument, "view " + std::to_string(v) + " has a person with " +
+                                                std::to_string(p.size()) + " keypoints, layout " + layout_->name +
+                                                " has " + std::to_string(K));
+
+  selected_ = select_people(calib_, people, raw_previous_, {config_.min_confidence, 2 * config_.outlier_threshold_px});
+  uint32_t with_person = 0;
+  for (int s : selected_) with_person += s >= 0;
+
+  const double dt = info_.frame_index >= 0 ? (timestamp_us - last_timestamp_us_) * 1e-6 : 0.0;
+  ++info_.frame_index;
+  info_.timestamp_us = timestamp_us;
+  last_timestamp_us_ = timestamp_us;
+  info_.views_with_person = with_person;
+  info_.keypoints_total = static_cast<uint32_t>(K);
+  clear_frame();
+
+  if (with_person < static_cast<uint32_t>(config_.min_views)) {
+    info_.keypoints_solved = 0;
+    info_.mean_reprojection_error_px = 0;
+    info_.solve_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    raw_previous_.clear();
+    for (auto& f : filters_) f.reset();
+    throw Error(Errc::not_enough_views, "a person was found in " + std::to_string(with_person) +
+                                            " views, at least " + std::to_string(config_.min_views) + " are needed");
+  }
+
+  pool_->parallel_for(K, [&](size_t k) {
+    std::vector<ViewRay> rays;
+    rays.reserve(V);
+    for (size_t v = 0; v < V; ++v) {
+      if (selected_[v] < 0) continue;
+      const Keypoint2D& kp = people[v][selected_[v]][k];
+      if (!(kp.confidence >= config_.min_confidence) || !std::isfinite(kp.x) || !std::isfinite(kp.y)) continue;
+      rays.push_back(make_view_ray(calib_[v], static_cast<int>(v), {kp.x, kp.y}, kp.confidence));
+    }
+    keypoints_[k] = solve_keypoint(rays);
+  });
+
+  raw_previous_.assign(K, Eigen::Vector3d::Constant(std::nan("")));
+  uint32_t solved = 0;
+  double err = 0;
+  for (size_t k = 0; k < K; ++k) {
+    PointResult& r = keypoints_[k];
+    if (!r.valid) {
+      filters_[k].reset();
+      continue;
+    }
+    raw_previous_[k] = r.position;
+    ++solved;
+    err += r.reprojection_error_px;
+    if (config_.filter) r.position = filters_[k].filter(r.position, dt);
+  }
+  info_.keypoints_solved = solved;
+  info_.mean_reprojection_error_px = solved ? err / solved : 0;
+  derive_skeleton();
+  info_.solve_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void Session::derive_skeleton() {
+  for (int j = 0; j < kJointCount; ++j) {
+    for (const auto& alternative : layout_->joint_sources[j]) {
+      bool all = true;
+      for (int k : alternative) all = all && keypoints_[k].valid;
+      if (!all) continue;
+      PointResult out;
+      out.valid = true;
+      out.confidence = 1e9;
+      out.views_used = 1u << 31;
+      for (int k : alternative) {
+        const PointResult& r = keypoints_[k];
+        out.position += r.position / static_cast<double>(alternative.size());
+        out.reprojection_error_px += r.reprojection_error_px / static_cast<double>(alternative.size());
+        out.confidence = std::min(out.confidence, r.confidence);
+        out.views_used = std::min(out.views_used, r.views_used);
+        out.view_mask |= r.view_mask;
+      }
+      joints_[j] = out;
+      break;
+    }
+  }
+  SkeletonJoints rig_joints;
+  for (int j = 0; j < kJointCount; ++j) {
+    if (!joints_[j].valid) {
+      rig_joints[j] = Eigen::Vector3d::Constant(std::nan(""));
+      continue;
+    }
+    rig_joints[j] = config_.z_up ? zup_to_yup(joints_[j].position) : joints_[j].position;
+  }
+  bones_ = solve_bones(rig_joints);
+}
+
+}  // namespace octocap

@@ -1,0 +1,92 @@
+// One capture session: person selection -> 3D solve -> temporal filter -> skeleton joints -> bone rotations.
+// The C ABI's session is a thin shell over this class.
+#pragma once
+#include <Eigen/Geometry>
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "core/camera.h"
+#include "core/layout.h"
+#include "core/parallel.h"
+#include "io/openpose_json.h"
+#include "rig/bone_solver.h"
+#include "solve/observation.h"
+#include "solve/one_euro.h"
+
+namespace octocap {
+
+enum class Method : int { subdivision = 0, triangulation = 1 };
+
+struct SessionConfig {
+  LayoutId layout = LayoutId::body25;
+  Method method = Method::subdivision;
+  bool filter = true;
+  bool z_up = false;
+  int sigma = 0;  // 0: camera count - 1, at least 2
+  int min_views = 2;
+  double delta = 0.01;
+  double pixel_tolerance = 4;
+  int max_candidates = 48;
+  double min_confidence = 0.3;
+  double outlier_threshold_px = 15;
+  Eigen::AlignedBox3d volume;  // empty: derived from the calibration
+  double filter_min_cutoff = 1.5;
+  double filter_beta = 5.0;
+  unsigned threads = 0;
+};
+
+struct FrameInfo {
+  int64_t frame_index = -1;
+  int64_t timestamp_us = 0;
+  uint32_t keypoints_solved = 0;
+  uint32_t keypoints_total = 0;
+  double mean_reprojection_error_px = 0;
+  uint32_t views_with_person = 0;
+  double solve_ms = 0;
+};
+
+class Session {
+ public:
+  Session(const SessionConfig& config, Calibration calib);
+
+  // people[view][person]; throws Error(camera_mismatch / invalid_argument / not_enough_views). After
+  // not_enough_views the frame is empty (all missing) and the session stays usable.
+  void solve(const std::vector<std::vector<Person2D>>& people, int64_t timestamp_us);
+  void reset();
+
+  bool has_result() const { return info_.frame_index >= 0; }
+  const FrameInfo& frame_info() const { return info_; }
+  const std::vector<PointResult>& keypoints() const { return keypoints_; }
+  const std::array<PointResult, kJointCount>& joints() const { return joints_; }
+  const SkeletonPose& bones() const { return bones_; }
+  const std::vector<int>& selected_people() const { return selected_; }
+  const SessionConfig& config() const { return config_; }
+  const Calibration& calibration() const { return calib_; }
+  const KeypointLayout& keypoint_layout() const { return *layout_; }
+  const Eigen::AlignedBox3d& volume() const { return volume_; }
+  int effective_sigma() const { return sigma_; }
+
+ private:
+  PointResult solve_keypoint(const std::vector<ViewRay>& rays) const;
+  void derive_skeleton();
+  void clear_frame();
+
+  SessionConfig config_;
+  Calibration calib_;
+  const KeypointLayout* layout_;
+  Eigen::AlignedBox3d volume_;
+  int sigma_ = 2;
+  std::unique_ptr<WorkerPool> pool_;
+
+  std::vector<PointResult> keypoints_;
+  std::vector<Eigen::Vector3d> raw_previous_;  // unfiltered, for person tracking; empty when unknown
+  std::vector<OneEuroFilter3> filters_;
+  int64_t last_timestamp_us_ = 0;
+  std::array<PointResult, kJointCount> joints_{};
+  SkeletonPose bones_{};
+  std::vector<int> selected_;
+  FrameInfo info_;
+};
+
+}  // namespace octocap

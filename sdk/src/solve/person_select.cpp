@@ -1,0 +1,190 @@
+#include "solve/person_select.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "solve/triangulation.h"
+
+namespace octocap {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+double median(std::vector<double>& v) {
+  if (v.empty()) return kInf;
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+// Median distance between a person's confident keypoints and the projection of known 3D keypoints.
+double distance_to_pose(const Camera& cam, const Person2D& person, const std::vector<Eigen::Vector3d>& pose,
+                        double min_conf) {
+  std::vector<double> d;
+  for (size_t k = 0; k < person.size() && k < pose.size(); ++k) {
+    if (person[k].confidence < min_conf || !pose[k].allFinite()) continue;
+    const Eigen::Vector2d p = cam.project(pose[k]);
+    if (p.allFinite()) d.push_back((p - Eigen::Vector2d(person[k].x, person[k].y)).norm());
+  }
+  return d.size() >= 3 ? median(d) : kInf;
+}
+
+// Per-view median reprojection error of the keypoints triangulated from the chosen people.
+std::vector<double> combination_errors(const Calibration& calib, const std::vector<std::vector<Person2D>>& people,
+                                       const std::vector<int>& choice, double min_conf) {
+  const size_t V = calib.size();
+  size_t K = 0;
+  for (size_t v = 0; v < V; ++v)
+    if (choice[v] >= 0) K = people[v][choice[v]].size();
+  std::vector<std::vector<double>> errs(V);
+  std::vector<ViewRay> rays;
+  for (size_t k = 0; k < K; ++k) {
+    rays.clear();
+    uint64_t mask = 0;
+    for (size_t v = 0; v < V; ++v) {
+      if (choice[v] < 0) continue;
+      const Keypoint2D& kp = people[v][choice[v]][k];
+      if (kp.confidence < min_conf) continue;
+      rays.push_back(make_view_ray(calib[v], static_cast<int>(v), {kp.x, kp.y}, kp.confidence));
+      mask |= uint64_t{1} << v;
+    }
+    if (rays.size() < 2) continue;
+    Eigen::Vector3d X;
+    if (!triangulate_dlt(calib, rays, mask, true, X)) continue;
+    for (const ViewRay& r : rays) {
+      const Eigen::Vector2d p = calib[r.view].project(X);
+      errs[r.view].push_back(p.allFinite() ? (p - r.pixel).norm() : 1e6);
+    }
+  }
+  std::vector<double> out(V, kInf);
+  for (size_t v = 0; v < V; ++v)
+    if (errs[v].size() >= 3) out[v] = median(errs[v]);
+  return out;
+}
+
+double mean_confidence(const Person2D& p) {
+  double s = 0;
+  for (const auto& k : p) s += k.confidence;
+  return p.empty() ? 0 : s / p.size();
+}
+
+// Keeps the enumeration bounded: at most `keep` most confident people per view.
+std::vector<std::vector<int>> candidates_per_view(const std::vector<std::vector<Person2D>>& people, size_t keep) {
+  std::vector<std::vector<int>> out(people.size());
+  for (size_t v = 0; v < people.size(); ++v) {
+    for (size_t p = 0; p < people[v].size(); ++p) out[v].push_back(static_cast<int>(p));
+    std::stable_sort(out[v].begin(), out[v].end(), [&](int a, int b) {
+      return mean_confidence(people[v][a]) > mean_confidence(people[v][b]);
+    });
+    if (out[v].size() > keep) out[v].resize(keep);
+  }
+  return out;
+}
+
+// Exhaustive search over "one person or nobody" per view for the views not yet fixed. A view left empty
+// costs the threshold; a chosen person costs its reprojection error (capped at twice the threshold), so
+// agreeing views are preferred to empty ones and a disagreeing one is dropped afterwards.
+std::vector<int> best_combination(const Calibration& calib, const std::vector<std::vector<Person2D>>& people,
+                                  std::vector<int> fixed, const PersonSelectParams& params) {
+  const size_t V = calib.size();
+  size_t keep = 4;
+  auto cands = candidates_per_view(people, keep);
+  auto combos = [&] {
+    double n = 1;
+    for (size_t v = 0; v < V; ++v)
+      if (fixed[v] < 0) n *= static_cast<double>(cands[v].size() + 1);
+    return n;
+  };
+  while (combos() > 4096 && keep > 1) cands = candidates_per_view(people, --keep);
+
+  std::vector<int> choice = fixed, best = fixed;
+  double best_cost = kInf;
+  std::vector<size_t> digit(V, 0);
+  for (;;) {
+    int chosen = 0;
+    for (size_t v = 0; v < V; ++v) {
+      if (fixed[v] >= 0) {
+        choice[v] = fixed[v];
+      } else {
+        choice[v] = digit[v] < cands[v].size() ? cands[v][digit[v]] : -1;
+      }
+      if (choice[v] >= 0) ++chosen;
+    }
+    if (chosen >= 2) {
+      const auto errs = combination_errors(calib, people, choice, params.min_confidence);
+      double cost = 0;
+      for (size_t v = 0; v < V; ++v)
+        cost += choice[v] < 0 ? params.association_threshold_px
+                              : std::min(errs[v], 2 * params.association_threshold_px);
+      if (cost < best_cost) {
+        best_cost = cost;
+        best = choice;
+      }
+    }
+    size_t v = 0;  // next combination (mixed-radix counter over the free views)
+    for (; v < V; ++v) {
+      if (fixed[v] >= 0) continue;
+      if (++digit[v] <= cands[v].size()) break;
+      digit[v] = 0;
+    }
+    if (v == V) break;
+  }
+  if (best_cost == kInf) return std::vector<int>(V, -1);
+  const auto errs = combination_errors(calib, people, best, params.min_confidence);
+  for (size_t v = 0; v < V; ++v)
+    if (best[v] >= 0 && fixed[v] < 0 && errs[v] > params.association_threshold_px) best[v] = -1;
+  return best;
+}
+
+}  // namespace
+
+std::vector<int> select_people(const Calibration& calib, const std::vector<std::vector<Person2D>>& people,
+                               const std::vector<Eigen::Vector3d>& previous, const PersonSelectParams& params) {
+  const size_t V = calib.size();
+  std::vector<int> fixed(V, -1);
+  bool any_multi = false;
+  for (size_t v = 0; v < V; ++v)
+    if (people[v].size() > 1) any_multi = true;
+  if (!any_multi) {
+    // One candidate per view: nothing to choose. A wrong lone detection is rejected per keypoint by the
+    // 3D solvers (sigma, outlier views), which is cheaper than judging the whole person here.
+    for (size_t v = 0; v < V; ++v) fixed[v] = people[v].empty() ? -1 : 0;
+    return fixed;
+  }
+  if (!previous.empty()) {
+    size_t matched = 0;
+    std::vector<int> tracked(V, -1);
+    for (size_t v = 0; v < V; ++v) {
+      double best = kInf;
+      for (size_t p = 0; p < people[v].size(); ++p) {
+        const double d = distance_to_pose(calib[v], people[v][p], previous, params.min_confidence);
+        if (d < best) {
+          best = d;
+          tracked[v] = static_cast<int>(p);
+        }
+      }
+      // Between two frames a person moves; allow more than the association threshold.
+      if (best > 3 * params.association_threshold_px) tracked[v] = -1;
+      if (tracked[v] >= 0) ++matched;
+    }
+    if (matched >= 2) {
+      // The tracked people must still agree with each other; a free view may join them.
+      std::vector<int> check = tracked;
+      const auto errs = combination_errors(calib, people, check, params.min_confidence);
+      size_t agreeing = 0;
+      for (size_t v = 0; v < V; ++v) {
+        if (check[v] >= 0 && errs[v] > params.association_threshold_px) check[v] = -1;
+        if (check[v] >= 0) ++agreeing;
+      }
+      if (agreeing >= 2) {
+        bool free_views = false;
+        for (size_t v = 0; v < V; ++v)
+          if (check[v] < 0 && !people[v].empty()) free_views = true;
+        return free_views ? best_combination(calib, people, check, params) : check;
+      }
+    }
+  }
+  return best_combination(calib, people, std::vector<int>(V, -1), params);
+}
+
+}  // namespace octocap

@@ -1,0 +1,95 @@
+#include "solve/triangulation.h"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+
+namespace octocap {
+namespace {
+
+// Largest reprojection error (px) over the views in mask; infinity if the point is behind a camera.
+double worst_error(const Calibration& calib, const std::vector<ViewRay>& rays, uint64_t mask,
+                   const Eigen::Vector3d& X, int* worst_view) {
+  double worst = 0;
+  for (const ViewRay& r : rays) {
+    if (!(mask >> r.view & 1u)) continue;
+    const Eigen::Vector2d p = calib[r.view].project(X);
+    const double e = p.allFinite() ? (p - r.pixel).norm() : std::numeric_limits<double>::infinity();
+    if (e >= worst) {
+      worst = e;
+      if (worst_view) *worst_view = r.view;
+    }
+  }
+  return worst;
+}
+
+int popcount(uint64_t m) {
+  int n = 0;
+  for (; m; m &= m - 1) ++n;
+  return n;
+}
+
+}  // namespace
+
+bool triangulate_dlt(const Calibration& calib, const std::vector<ViewRay>& rays, uint64_t mask, bool weighted,
+                     Eigen::Vector3d& out) {
+  // Normal equations of the homogeneous system: sum of per-view 2x4 blocks, smallest eigenvector.
+  Eigen::Matrix4d AtA = Eigen::Matrix4d::Zero();
+  int n = 0;
+  for (const ViewRay& r : rays) {
+    if (!(mask >> r.view & 1u)) continue;
+    const Camera& c = calib[r.view];
+    Eigen::Matrix<double, 3, 4> P;
+    P << c.R, c.t;
+    const double w = weighted ? r.confidence : 1.0;
+    const Eigen::Matrix<double, 1, 4> row1 = w * (r.normalized.x() * P.row(2) - P.row(0));
+    const Eigen::Matrix<double, 1, 4> row2 = w * (r.normalized.y() * P.row(2) - P.row(1));
+    AtA += row1.transpose() * row1 + row2.transpose() * row2;
+    ++n;
+  }
+  if (n < 2) return false;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> es(AtA);
+  const Eigen::Vector4d h = es.eigenvectors().col(0);
+  if (std::abs(h.w()) < 1e-12) return false;
+  out = h.head<3>() / h.w();
+  return out.allFinite();
+}
+
+PointResult solve_triangulation(const Calibration& calib, const std::vector<ViewRay>& rays,
+                                const TriangulationParams& params) {
+  PointResult result;
+  uint64_t mask = 0;
+  for (const ViewRay& r : rays) mask |= uint64_t{1} << r.view;
+  if (popcount(mask) < params.min_views) return result;
+  Eigen::Vector3d X;
+  if (!triangulate_dlt(calib, rays, mask, true, X)) return result;
+  double worst = worst_error(calib, rays, mask, X, nullptr);
+  while (worst > params.outlier_threshold_px && popcount(mask) > params.min_views) {
+    double best_worst = std::numeric_limits<double>::infinity();
+    uint64_t best_mask = 0;
+    Eigen::Vector3d best_X;
+    for (const ViewRay& r : rays) {
+      if (!(mask >> r.view & 1u)) continue;
+      const uint64_t m = mask & ~(uint64_t{1} << r.view);
+      Eigen::Vector3d Y;
+      if (!triangulate_dlt(calib, rays, m, true, Y)) continue;
+      const double w = worst_error(calib, rays, m, Y, nullptr);
+      if (w < best_worst) {
+        best_worst = w;
+        best_mask = m;
+        best_X = Y;
+      }
+    }
+    if (best_mask == 0) break;
+    mask = best_mask;
+    X = best_X;
+    worst = best_worst;
+  }
+  // A point that still disagrees with its views, or sits behind a camera, is not reported as a guess.
+  if (!std::isfinite(worst) || worst > params.outlier_threshold_px) return result;
+  result.position = X;
+  result.valid = true;
+  score_point(calib, rays, mask, result);
+  return result;
+}
+
+}  // namespace octocap
