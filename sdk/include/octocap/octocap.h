@@ -245,8 +245,9 @@ typedef enum octocap_filter_t {
 
 /** Up axis of the calibration's world frame. */
 typedef enum octocap_up_axis_t {
-  OCTOCAP_UP_Y = 0,  /**< Y up (octocap's convention). */
-  OCTOCAP_UP_Z = 1   /**< Z up (Qualisys, Pose2Sim calibrations, most lab systems). */
+  OCTOCAP_UP_Y = 0,    /**< Y up (octocap's convention). */
+  OCTOCAP_UP_Z = 1,    /**< Z up (Qualisys, Pose2Sim calibrations, most lab systems). */
+  OCTOCAP_UP_AUTO = 2  /**< Decide from the cameras: upright cameras' image "down" axes point to world down. */
 } octocap_up_axis_t;
 
 /** Session configuration. Fill with octocap_session_config_init() first. */
@@ -255,7 +256,7 @@ typedef struct octocap_session_config_t {
   octocap_layout_t layout;       /**< Keypoint layout of the 2D input (AUTO is not allowed here). Default BODY_25. */
   octocap_method_t method;       /**< Default SUBDIVISION. */
   octocap_filter_t filter;       /**< Default ONE_EURO. */
-  octocap_up_axis_t up_axis;     /**< Default Y. */
+  octocap_up_axis_t up_axis;     /**< Default AUTO; see octocap_session_up_axis() for the resolved one. */
   uint32_t sigma;                /**< Views a cube must be supported by. 0 = camera count - 1 (min 2). Clamped to the views that saw the joint, never below min_views. */
   uint32_t min_views;            /**< Fewest views a joint is solved from. Default 2. */
   float delta_m;                 /**< Smallest cube edge, metres. Default 0.01. */
@@ -308,6 +309,9 @@ OCTOCAP_API octocap_result_t octocap_session_solve_keypoints(octocap_session_t* 
                                                              const octocap_keypoint2d_t* keypoints,
                                                              const uint32_t* people_per_view,
                                                              uint32_t view_count, int64_t timestamp_us);
+
+/** The up axis in use (AUTO resolved to Y or Z at creation). */
+OCTOCAP_API octocap_result_t octocap_session_up_axis(const octocap_session_t* session, octocap_up_axis_t* out);
 
 /** Resets temporal state (filter, person tracking), e.g. between takes. */
 OCTOCAP_API octocap_result_t octocap_session_reset(octocap_session_t* session);

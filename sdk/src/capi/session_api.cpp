@@ -26,9 +26,9 @@ SessionConfig from_c(const octocap_session_config_t& c) {
   if (c.filter != OCTOCAP_FILTER_NONE && c.filter != OCTOCAP_FILTER_ONE_EURO)
     throw Error(Errc::invalid_argument, "config.filter is not a known filter");
   s.filter = c.filter == OCTOCAP_FILTER_ONE_EURO;
-  if (c.up_axis != OCTOCAP_UP_Y && c.up_axis != OCTOCAP_UP_Z)
-    throw Error(Errc::invalid_argument, "config.up_axis must be Y or Z");
-  s.z_up = c.up_axis == OCTOCAP_UP_Z;
+  if (c.up_axis != OCTOCAP_UP_Y && c.up_axis != OCTOCAP_UP_Z && c.up_axis != OCTOCAP_UP_AUTO)
+    throw Error(Errc::invalid_argument, "config.up_axis must be Y, Z or AUTO");
+  s.up = static_cast<UpAxis>(c.up_axis);
   const float floats[] = {c.delta_m, c.pixel_tolerance, c.min_confidence, c.outlier_threshold_px,
                           c.filter_min_cutoff_hz, c.filter_beta, c.volume_min[0], c.volume_min[1],
                           c.volume_min[2], c.volume_max[0], c.volume_max[1], c.volume_max[2]};
@@ -107,7 +107,7 @@ void octocap_session_config_init(octocap_session_config_t* c) {
   c->layout = OCTOCAP_LAYOUT_BODY_25;
   c->method = OCTOCAP_METHOD_SUBDIVISION;
   c->filter = OCTOCAP_FILTER_ONE_EURO;
-  c->up_axis = OCTOCAP_UP_Y;
+  c->up_axis = OCTOCAP_UP_AUTO;
   c->sigma = 0;
   c->min_views = 2;
   c->delta_m = 0.01f;
@@ -170,6 +170,14 @@ octocap_result_t octocap_session_solve_keypoints(octocap_session_t* s, const oct
       }
     }
     session.solve(people, timestamp_us);
+  });
+}
+
+octocap_result_t octocap_session_up_axis(const octocap_session_t* s, octocap_up_axis_t* out) {
+  return capi::guard([&] {
+    capi::checked(s, "session");
+    capi::require(out, "out");
+    *out = s->session->z_up() ? OCTOCAP_UP_Z : OCTOCAP_UP_Y;
   });
 }
 

@@ -11,6 +11,28 @@
 namespace fs = std::filesystem;
 
 namespace octocap {
+namespace {
+
+// BODY_25 and BODY_25B both have 25 keypoints. In BODY_25, keypoint 1 (neck) sits midway between 2 and 5
+// (the shoulders); in BODY_25B keypoint 1 is the left eye, 2 the right eye and 5 the left shoulder, so it is
+// nowhere near their midpoint. The median over the people seen decides.
+LayoutId disambiguate_25(const std::vector<Person2D>& people) {
+  std::vector<double> ratios;
+  for (const auto& p : people) {
+    const auto& a = p[1];
+    const auto& b = p[2];
+    const auto& c = p[5];
+    if (a.confidence <= 0 || b.confidence <= 0 || c.confidence <= 0) continue;
+    const double span = std::hypot(b.x - c.x, b.y - c.y);
+    if (span < 1e-6) continue;
+    ratios.push_back(std::hypot(a.x - 0.5 * (b.x + c.x), a.y - 0.5 * (b.y + c.y)) / span);
+  }
+  if (ratios.empty()) return LayoutId::body25;
+  std::nth_element(ratios.begin(), ratios.begin() + ratios.size() / 2, ratios.end());
+  return ratios[ratios.size() / 2] < 0.3 ? LayoutId::body25 : LayoutId::body25b;
+}
+
+}  // namespace
 
 std::vector<Person2D> read_openpose_file(const std::string& path, size_t keypoint_count) {
   std::ifstream in(path);
@@ -78,17 +100,17 @@ OpenPoseRecording::OpenPoseRecording(const std::string& directory, LayoutId layo
   frame_count_ = views_.front().size();
   for (const auto& v : views_) frame_count_ = std::min(frame_count_, v.size());
   if (layout_ == LayoutId::automatic) {
-    for (size_t f = 0; f < frame_count_ && layout_ == LayoutId::automatic; ++f) {
+    std::vector<Person2D> seen;
+    for (size_t f = 0; f < frame_count_ && seen.size() < 20; ++f) {
       for (const auto& v : views_) {
-        const auto people = read_openpose_file(v[f], 0);
-        if (!people.empty()) {
-          layout_ = layout_for_count(people.front().size());
-          break;
-        }
+        auto people = read_openpose_file(v[f], seen.empty() ? 0 : seen.front().size());
+        for (auto& p : people) seen.push_back(std::move(p));
       }
     }
-    if (layout_ == LayoutId::automatic)
+    if (seen.empty())
       throw Error(Errc::parse, directory + ": no person in any file, cannot detect the keypoint layout");
+    layout_ = layout_for_count(seen.front().size());
+    if (layout_ == LayoutId::body25) layout_ = disambiguate_25(seen);
   }
 }
 

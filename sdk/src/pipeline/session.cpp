@@ -12,6 +12,16 @@
 #include "solve/volume.h"
 
 namespace octocap {
+namespace {
+
+// Cameras are mounted roughly upright: each one's image-down axis (+y in the camera) points to world down.
+bool guess_z_up(const Calibration& calib) {
+  Eigen::Vector3d down = Eigen::Vector3d::Zero();
+  for (const Camera& c : calib) down += c.R.transpose() * Eigen::Vector3d::UnitY();
+  return std::abs(down.z()) > std::abs(down.y());
+}
+
+}  // namespace
 
 Session::Session(const SessionConfig& config, Calibration calib)
     : config_(config), calib_(std::move(calib)), layout_(&layout(config.layout)) {
@@ -32,6 +42,7 @@ Session::Session(const SessionConfig& config, Calibration calib)
     if (volume_.isEmpty())
       throw Error(Errc::invalid_argument, "the cameras share no field of view; give the capture volume explicitly");
   }
+  z_up_ = config_.up == UpAxis::automatic ? guess_z_up(calib_) : config_.up == UpAxis::z;
   pool_ = std::make_unique<WorkerPool>(config_.threads);
   const size_t K = layout_->keypoints.size();
   filters_.assign(K, OneEuroFilter3(config_.filter_min_cutoff, config_.filter_beta));
@@ -63,6 +74,7 @@ PointResult Session::solve_keypoint(const std::vector<ViewRay>& rays) const {
   p.pixel_tolerance = config_.pixel_tolerance;
   p.max_candidates = config_.max_candidates;
   p.volume = volume_;
+  p.max_reprojection_error_px = config_.outlier_threshold_px;
   return solve_subdivision(calib_, rays, p);
 }
 
@@ -161,7 +173,7 @@ void Session::derive_skeleton() {
       rig_joints[j] = Eigen::Vector3d::Constant(std::nan(""));
       continue;
     }
-    rig_joints[j] = config_.z_up ? zup_to_yup(joints_[j].position) : joints_[j].position;
+    rig_joints[j] = z_up_ ? zup_to_yup(joints_[j].position) : joints_[j].position;
   }
   bones_ = solve_bones(rig_joints);
 }

@@ -17,12 +17,13 @@
 namespace octocap {
 
 enum class Method : int { subdivision = 0, triangulation = 1 };
+enum class UpAxis : int { y = 0, z = 1, automatic = 2 };
 
 struct SessionConfig {
   LayoutId layout = LayoutId::body25;
   Method method = Method::subdivision;
   bool filter = true;
-  bool z_up = false;
+  UpAxis up = UpAxis::automatic;
   int sigma = 0;  // 0: camera count - 1, at least 2
   int min_views = 2;
   double delta = 0.01;
@@ -66,6 +67,7 @@ class Session {
   const KeypointLayout& keypoint_layout() const { return *layout_; }
   const Eigen::AlignedBox3d& volume() const { return volume_; }
   int effective_sigma() const { return sigma_; }
+  bool z_up() const { return z_up_; }
 
  private:
   PointResult solve_keypoint(const std::vector<ViewRay>& rays) const;
@@ -77,6 +79,7 @@ class Session {
   const KeypointLayout* layout_;
   Eigen::AlignedBox3d volume_;
   int sigma_ = 2;
+  bool z_up_ = false;
   std::unique_ptr<WorkerPool> pool_;
 
   std::vector<PointResult> keypoints_;

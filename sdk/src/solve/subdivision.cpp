@@ -73,28 +73,14 @@ bool hull_contains_detection(const Camera& cam, const Eigen::AlignedBox3d& cube,
   return true;
 }
 
-PointResult solve_subdivision(const Calibration& calib, const std::vector<ViewRay>& rays,
-                              const SubdivisionParams& params) {
-  PointResult result;
-  const int n = static_cast<int>(rays.size());
-  if (n < params.min_views || n == 0 || params.volume.isEmpty()) return result;
-  const int need = std::clamp(params.sigma, params.min_views, n);
+namespace {
 
-  // Most confident views first: a cube that fails them is culled before the weak views are tested.
-  std::vector<PreparedRay> prepared;
-  prepared.reserve(rays.size());
-  std::vector<const ViewRay*> order;
-  for (const auto& r : rays) order.push_back(&r);
-  std::stable_sort(order.begin(), order.end(),
-                   [](const ViewRay* a, const ViewRay* b) { return a->confidence > b->confidence; });
-  for (const ViewRay* r : order) {
-    Eigen::Vector3d d = r->direction;
-    for (int k = 0; k < 3; ++k)
-      if (std::abs(d[k]) < 1e-30) d[k] = 1e-30;
-    prepared.push_back({r->origin, r->direction, d.cwiseInverse(),
-                        params.pixel_tolerance / calib[r->view].focal(), r->view});
-  }
-
+// One descent with a fixed support requirement. Returns false when no cube of the volume is supported, or
+// when the descent stopped (N_cube < need everywhere) while the cubes were still coarser than `converged`:
+// the mean of such cubes would be a guess, not a measurement.
+bool descend(const std::vector<PreparedRay>& prepared, const SubdivisionParams& params, int need,
+             Eigen::Vector3d& position, uint64_t& mask) {
+  const int n = static_cast<int>(prepared.size());
   std::vector<Cube> current{{params.volume.min(), 0, 0, 0}}, next;
   Eigen::Vector3d size = params.volume.sizes();
   bool first_level = true;
@@ -124,8 +110,8 @@ PointResult solve_subdivision(const Calibration& calib, const std::vector<ViewRa
       }
     }
     if (next.empty()) {
-      if (first_level) return result;  // no cube of the volume is supported: the joint is missing
-      break;                           // N_cube < sigma everywhere: the previous level's cubes are the answer
+      if (first_level) return false;  // no cube of the volume is supported
+      break;                          // N_cube < sigma everywhere: the previous level's cubes are the answer
     }
     if (next.size() > static_cast<size_t>(params.max_candidates)) {
       std::partial_sort(next.begin(), next.begin() + params.max_candidates, next.end(),
@@ -138,6 +124,7 @@ PointResult solve_subdivision(const Calibration& calib, const std::vector<ViewRa
     size = half;
     first_level = false;
   }
+  if (size.maxCoeff() >= 4 * params.delta) return false;
 
   // Clustering: mean of the surviving candidates' centres. Only the best-supported ones are averaged, so a
   // stray pair of rays (a wrong detection meeting a right one) cannot pull the mean when sigma is low.
@@ -145,16 +132,54 @@ PointResult solve_subdivision(const Calibration& calib, const std::vector<ViewRa
   for (const Cube& c : current) best = std::max(best, c.support);
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   int count = 0;
-  uint64_t mask = 0;
+  mask = 0;
   for (const Cube& c : current) {
     if (c.support != best) continue;
     sum += c.lo + 0.5 * size;
     mask |= c.mask;
     ++count;
   }
-  result.position = sum / count;
-  result.valid = true;
-  score_point(calib, rays, mask, result);
+  position = sum / count;
+  return true;
+}
+
+}  // namespace
+
+PointResult solve_subdivision(const Calibration& calib, const std::vector<ViewRay>& rays,
+                              const SubdivisionParams& params) {
+  PointResult result;
+  const int n = static_cast<int>(rays.size());
+  if (n < params.min_views || n == 0 || params.volume.isEmpty()) return result;
+
+  // Most confident views first: a cube that fails them is culled before the weak views are tested.
+  std::vector<const ViewRay*> order;
+  for (const auto& r : rays) order.push_back(&r);
+  std::stable_sort(order.begin(), order.end(),
+                   [](const ViewRay* a, const ViewRay* b) { return a->confidence > b->confidence; });
+  std::vector<PreparedRay> prepared;
+  prepared.reserve(rays.size());
+  for (const ViewRay* r : order) {
+    Eigen::Vector3d d = r->direction;
+    for (int k = 0; k < 3; ++k)
+      if (std::abs(d[k]) < 1e-30) d[k] = 1e-30;
+    prepared.push_back({r->origin, r->direction, d.cwiseInverse(),
+                        params.pixel_tolerance / calib[r->view].focal(), r->view});
+  }
+
+  // sigma as configured (clamped to the views that saw the joint). When wrong detections leave no cube
+  // with that support, or the answer disagrees with its own views, one fewer view is asked for, down to
+  // min_views; below that the joint is reported missing.
+  for (int need = std::clamp(params.sigma, params.min_views, n); need >= params.min_views; --need) {
+    Eigen::Vector3d position;
+    uint64_t mask = 0;
+    if (!descend(prepared, params, need, position, mask)) continue;
+    PointResult r;
+    r.position = position;
+    r.valid = true;
+    score_point(calib, rays, mask, r);
+    if (r.reprojection_error_px > params.max_reprojection_error_px) continue;
+    return r;
+  }
   return result;
 }
 

@@ -1,0 +1,18 @@
+#pragma once
+#include <string>
+
+struct SolveOptions {
+  std::string calibration, keypoints, output, csv, ground_truth;
+  std::string method = "subdivision";
+  std::string filter = "oneeuro";
+  std::string layout = "auto";
+  std::string up = "auto";
+  unsigned sigma = 0;
+  double delta_mm = 10.0;
+  double rate_hz = 30.0;
+  unsigned threads = 0;
+  bool quiet = false;
+};
+
+int run_solve(const SolveOptions& options);
+int run_layouts();
