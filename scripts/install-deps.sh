@@ -18,5 +18,6 @@ $SUDO apt-get install -y -q --no-install-recommends \
   build-essential cmake ninja-build pkg-config \
   libeigen3-dev \
   libtomlplusplus-dev nlohmann-json3-dev libcli11-dev \
-  libopencv-core-dev libopencv-calib3d-dev
+  libopencv-core-dev libopencv-calib3d-dev \
+  assimp-testmodels python3 python3-pip
 $SUDO apt-get install -y -q --no-install-recommends -t bookworm-backports libcatch2-dev

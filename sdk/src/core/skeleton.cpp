@@ -12,7 +12,7 @@ const std::array<const char*, kJointCount>& joint_names() {
 const std::array<BoneDef, kBoneCount>& bone_table() {
   // METHOD.md's bones, plus ROOT (global pelvis orientation) so that the legs hang from the pelvis, not the torso.
   static const std::array<BoneDef, kBoneCount> bones = {{
-      {"root", -1, kRoot, kNeck},
+      {"root", -1, kRoot, kLHip},  // points at the left hip: its length is half the hip width
       {"torso", kBoneRoot, kRoot, kNeck},
       {"head", kBoneTorso, kNeck, kHead},
       {"r_shoulder", kBoneTorso, kNeck, kRShoulder},
@@ -30,9 +30,10 @@ const std::array<BoneDef, kBoneCount>& bone_table() {
 }
 
 const std::array<Eigen::Vector3d, kBoneCount>& tpose_directions() {
-  // The four template frame kinds of the paper: up (torso, head), left (+X), right (-X), down (legs).
+  // The four template frame kinds of the paper: up (torso, head), left (+X), right (-X), down (legs);
+  // the root points at the left hip (+X).
   static const std::array<Eigen::Vector3d, kBoneCount> dirs = {
-      Eigen::Vector3d(0, 1, 0),  Eigen::Vector3d(0, 1, 0),  Eigen::Vector3d(0, 1, 0),
+      Eigen::Vector3d(1, 0, 0),  Eigen::Vector3d(0, 1, 0),  Eigen::Vector3d(0, 1, 0),
       Eigen::Vector3d(-1, 0, 0), Eigen::Vector3d(-1, 0, 0), Eigen::Vector3d(-1, 0, 0),
       Eigen::Vector3d(1, 0, 0),  Eigen::Vector3d(1, 0, 0),  Eigen::Vector3d(1, 0, 0),
       Eigen::Vector3d(0, -1, 0), Eigen::Vector3d(0, -1, 0), Eigen::Vector3d(0, -1, 0),

@@ -23,7 +23,7 @@ struct BoneDef {
   const char* name;
   int parent;  // parent bone, -1 for the root
   int head;    // joint the bone starts at
-  int tail;    // joint it ends at (for the root: the neck, which fixes its up axis)
+  int tail;    // joint it ends at (the root ends at the left hip)
 };
 
 const std::array<const char*, kJointCount>& joint_names();

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/log.h"
 
 namespace fs = std::filesystem;
 
@@ -98,7 +99,15 @@ OpenPoseRecording::OpenPoseRecording(const std::string& directory, LayoutId layo
   if (views_.empty())
     throw Error(Errc::io, directory + ": no camera sub-folder holding OpenPose .json files");
   frame_count_ = views_.front().size();
-  for (const auto& v : views_) frame_count_ = std::min(frame_count_, v.size());
+  size_t longest = 0;
+  for (const auto& v : views_) {
+    frame_count_ = std::min(frame_count_, v.size());
+    longest = std::max(longest, v.size());
+  }
+  if (longest != frame_count_)
+    log(LogLevel::warning, directory + ": camera folders hold " + std::to_string(frame_count_) + " to " +
+                               std::to_string(longest) + " files; using the first " + std::to_string(frame_count_) +
+                               " frames of each");
   if (layout_ == LayoutId::automatic) {
     std::vector<Person2D> seen;
     for (size_t f = 0; f < frame_count_ && seen.size() < 20; ++f) {

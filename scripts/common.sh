@@ -1,0 +1,24 @@
+# Shared by the scripts: where things are, and installing dependencies only when something is missing.
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BUILD_DIR="${OCTOCAP_BUILD_DIR:-$ROOT/build}"
+JOBS="${OCTOCAP_JOBS:-$(nproc)}"
+
+ensure_deps() {
+  local missing=0
+  for pkg in cmake ninja-build libeigen3-dev libtomlplusplus-dev nlohmann-json3-dev libcli11-dev \
+             libcatch2-dev libopencv-calib3d-dev assimp-testmodels python3-pip; do
+    dpkg -s "$pkg" >/dev/null 2>&1 || { missing=1; break; }
+  done
+  if [ "$missing" = 1 ]; then
+    echo "== installing dependencies (scripts/install-deps.sh)" >&2
+    bash "$ROOT/scripts/install-deps.sh"
+  fi
+}
+
+configure_and_build() {
+  local dir="$1"; shift
+  if [ ! -f "$dir/build.ninja" ]; then
+    cmake -S "$ROOT" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+  fi
+  cmake --build "$dir" -j "$JOBS"
+}

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Real data for the integration tests: Pose2Sim's demo (BSD-3-Clause), 4 real cameras with a Qualisys
+# calibration, 100 frames of real OpenPose BODY_25B detections (with a bystander), and Pose2Sim's own 3D.
+# Taken from the pose2sim 0.4.15 wheel on PyPI, unpacked once into .cache/ (not committed).
+set -euo pipefail
+ROOT="$(cd "$(dirname "$0")/.." && pwd)"
+DEST="$ROOT/.cache/pose2sim-0.4.15"
+if [ -f "$DEST/.complete" ]; then exit 0; fi
+TMP="$(mktemp -d)"
+trap 'rm -rf "$TMP"' EXIT
+PIP="pip3"
+command -v pip3 >/dev/null 2>&1 || PIP="python3 -m pip"
+echo "== fetching pose2sim==0.4.15 (Pose2Sim demo data, BSD-3-Clause)" >&2
+$PIP download --quiet --no-deps --only-binary=:all: --dest "$TMP" pose2sim==0.4.15
+rm -rf "$DEST"
+mkdir -p "$DEST"
+python3 - "$TMP"/pose2sim-0.4.15-*.whl "$DEST" <<'PY'
+import sys, zipfile, os
+wheel, dest = sys.argv[1], sys.argv[2]
+keep = ("Pose2Sim/Demo/calibration/Calib_qualisys.toml", "Pose2Sim/Demo/pose/",
+        "Pose2Sim/Demo/opensim/Balancing_for_IK.trc", "Pose2Sim/Demo/User/Config.toml")
+with zipfile.ZipFile(wheel) as z:
+    for name in z.namelist():
+        if name.startswith(keep) and not name.endswith("/"):
+            out = os.path.join(dest, name[len("Pose2Sim/"):])
+            os.makedirs(os.path.dirname(out), exist_ok=True)
+            with z.open(name) as src, open(out, "wb") as dst:
+                dst.write(src.read())
+PY
+cat > "$DEST/LICENSE-NOTE.txt" <<'TXT'
+From the pose2sim 0.4.15 wheel (PyPI), Pose2Sim/Demo: BSD-3-Clause, (c) David Pagnon.
+TXT
+touch "$DEST/.complete"

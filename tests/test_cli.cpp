@@ -1,0 +1,91 @@
+// The `octocap` command line, run as a user runs it, on the built-in sample recording.
+#include <catch2/catch_test_macros.hpp>
+#include <catch2/matchers/catch_matchers_string.hpp>
+#include <cstdio>
+#include <fstream>
+#include <regex>
+#include <string>
+
+#include "io/motion_files.h"
+#include "support/temp_dir.h"
+
+using Catch::Matchers::ContainsSubstring;
+
+namespace {
+
+struct Run {
+  int status;
+  std::string output;
+};
+
+Run run(const std::string& args) {
+  const std::string cmd = std::string(OCTOCAP_CLI_PATH) + " " + args + " 2>&1";
+  Run r{0, ""};
+  FILE* p = popen(cmd.c_str(), "r");
+  REQUIRE(p != nullptr);
+  char buf[4096];
+  while (size_t n = fread(buf, 1, sizeof buf, p)) r.output.append(buf, n);
+  r.status = pclose(p);
+  return r;
+}
+
+const std::string kSample = std::string(OCTOCAP_SOURCE_DIR) + "/data/sample";
+
+}  // namespace
+
+TEST_CASE("octocap solve on the sample: TRC, CSV and accuracy against its ground truth", "[cli]") {
+  testing::TempDir dir;
+  for (const char* method : {"subdivision", "triangulation"}) {
+    INFO(method);
+    const Run r = run("solve --calibration " + kSample + "/calibration.toml --keypoints " + kSample +
+                      "/keypoints --output " + dir.file("a.trc") + " --csv " + dir.file("a.csv") +
+                      " --ground-truth " + kSample + "/ground_truth.csv --method " + method + " --quiet");
+    INFO(r.output);
+    REQUIRE(r.status == 0);
+    REQUIRE_THAT(r.output, ContainsSubstring("layout BODY_25"));
+    std::smatch m;
+    REQUIRE(std::regex_search(r.output, m, std::regex("MPJPE ([0-9.]+) mm")));
+    CHECK(std::stod(m[1]) < 15.0);
+    REQUIRE(std::regex_search(r.output, m, std::regex("median ([0-9.]+) px")));
+    CHECK(std::stod(m[1]) < 3.0);
+
+    const octocap::MotionTrack trc = octocap::read_trc(dir.file("a.trc"));
+    REQUIRE(trc.markers.size() == 25);
+    REQUIRE(trc.markers[0] == "Nose");
+    REQUIRE(trc.frames.size() == 90);
+    std::ifstream csv(dir.file("a.csv"));
+    std::string header;
+    std::getline(csv, header);
+    REQUIRE(header.rfind("frame,Nose_x,Nose_y,Nose_z,Neck_x,Neck_y,Neck_z,RShoulder_x", 0) == 0);
+    size_t rows = 0;
+    for (std::string line; std::getline(csv, line);) ++rows;
+    REQUIRE(rows == 90);
+  }
+}
+
+TEST_CASE("octocap solve refuses bad input with a clear message", "[cli]") {
+  testing::TempDir dir;
+  Run r = run("solve --calibration " + kSample + "/calibration.toml --keypoints " + kSample +
+              "/keypoints --output " + dir.file("a.trc") + " --method magic");
+  REQUIRE(r.status != 0);
+  REQUIRE_THAT(r.output, ContainsSubstring("--method"));
+  const std::string bad = dir.write("bad.toml", "[cam_1]\nmatrix = 3\n");
+  r = run("solve --calibration " + bad + " --keypoints " + kSample + "/keypoints --output " + dir.file("a.trc"));
+  REQUIRE(r.status != 0);
+  REQUIRE_THAT(r.output, ContainsSubstring("bad.toml"));
+  // Four camera folders against a five-camera calibration.
+  for (int c = 0; c < 4; ++c) dir.write("kp/cam" + std::to_string(c) + "/0.json", "{\"people\": []}");
+  r = run("solve --calibration " + kSample + "/calibration.toml --keypoints " + dir.file("kp") +
+          " --layout BODY_25 --output " + dir.file("a.trc"));
+  REQUIRE(r.status != 0);
+  REQUIRE_THAT(r.output, ContainsSubstring("4 camera folders") && ContainsSubstring("5 cameras"));
+}
+
+TEST_CASE("octocap --help and layouts", "[cli]") {
+  Run r = run("solve --help");
+  REQUIRE(r.status == 0);
+  REQUIRE_THAT(r.output, ContainsSubstring("--delta-mm") && ContainsSubstring("--filter"));
+  r = run("layouts");
+  REQUIRE(r.status == 0);
+  REQUIRE_THAT(r.output, ContainsSubstring("BODY_25B (25 keypoints): Nose LEye REye"));
+}

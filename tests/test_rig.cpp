@@ -1,0 +1,135 @@
+// Bone rotations: rebuild the skeleton from quaternions, no spin, engine frames.
+#include <catch2/catch_test_macros.hpp>
+#include <cmath>
+#include <random>
+
+#include "rig/bone_solver.h"
+#include "rig/engine_frames.h"
+#include "support/skeleton_truth.h"
+#include "synth.h"
+
+using namespace octocap;
+
+namespace {
+
+SkeletonJoints tpose() {
+  SkeletonJoints j;
+  j[kRoot] = {0, 1, 0};
+  j[kLHip] = {0.1, 1, 0};
+  j[kRHip] = {-0.1, 1, 0};
+  j[kNeck] = {0, 1.5, 0};
+  j[kHead] = {0, 1.7, 0};
+  j[kLShoulder] = {0.2, 1.5, 0};
+  j[kLElbow] = {0.5, 1.5, 0};
+  j[kLHand] = {0.75, 1.5, 0};
+  j[kRShoulder] = {-0.2, 1.5, 0};
+  j[kRElbow] = {-0.5, 1.5, 0};
+  j[kRHand] = {-0.75, 1.5, 0};
+  j[kLKnee] = {0.1, 0.55, 0};
+  j[kLFoot] = {0.1, 0.1, 0};
+  j[kRKnee] = {-0.1, 0.55, 0};
+  j[kRFoot] = {-0.1, 0.1, 0};
+  return j;
+}
+
+double angle_between(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
+  return a.angularDistance(b);
+}
+
+}  // namespace
+
+TEST_CASE("the T-pose gives identity rotations", "[rig]") {
+  const SkeletonPose pose = solve_bones(tpose());
+  for (int b = 0; b < kBoneCount; ++b) {
+    INFO(bone_table()[b].name);
+    REQUIRE(pose[b].valid);
+    REQUIRE(angle_between(pose[b].local, Eigen::Quaterniond::Identity()) < 1e-9);
+  }
+}
+
+TEST_CASE("joints rebuilt from the quaternions and bone lengths match real motion", "[rig]") {
+  const auto motion = synth::load_cmu_motion(synth::default_bvh_path(), 0, 300, 8);
+  double worst = 0;
+  for (const auto& frame : motion.frames) {
+    const SkeletonJoints truth = testing::skeleton_from_keypoints(frame, LayoutId::body25);
+    const SkeletonPose pose = solve_bones(truth);
+    for (int b = 0; b < kBoneCount; ++b) REQUIRE(pose[b].valid);
+    const SkeletonJoints rebuilt = testing::rebuild_from_bones(pose, truth[kRoot]);
+    for (int j = 0; j < kJointCount; ++j) worst = std::max(worst, (rebuilt[j] - truth[j]).norm());
+    // Local rotations chain into the global ones.
+    for (int b = 1; b < kBoneCount; ++b)
+      REQUIRE(angle_between(pose[bone_table()[b].parent].global * pose[b].local, pose[b].global) < 1e-9);
+  }
+  REQUIRE(worst < 1e-9);
+}
+
+TEST_CASE("a forearm circling near its rest axis does not spin (anti-spin), the naive frame does", "[rig]") {
+  SkeletonJoints j = tpose();
+  const Eigen::Vector3d rest = tpose_directions()[kBoneLLowerArm];
+  double naive_roll_min = 10, naive_roll_max = -10, prev_naive = 0, naive_jump = 0, worst_twist = 0,
+         worst_step_excess = 0;
+  Eigen::Quaterniond prev_global;
+  Eigen::Vector3d prev_dir;
+  for (int i = 0; i <= 360; ++i) {
+    const double t = i * M_PI / 180, cone = 8 * M_PI / 180;
+    const Eigen::Vector3d d(std::cos(cone), std::sin(cone) * std::cos(t), std::sin(cone) * std::sin(t));
+    j[kLHand] = j[kLElbow] + 0.25 * d;
+    const SkeletonPose pose = solve_bones(j);
+    const BonePose& arm = pose[kBoneLLowerArm];
+    worst_twist = std::max(worst_twist, std::abs(twist_angle(arm.local, rest)));
+    if (i > 0) {
+      // The bone's frame turns no more than its direction does: no roll is added.
+      const double step = angle_between(prev_global, arm.global);
+      const double dir_step = std::acos(std::clamp(prev_dir.dot(d), -1.0, 1.0));
+      worst_step_excess = std::max(worst_step_excess, step - dir_step);
+    }
+    prev_global = arm.global;
+    prev_dir = d;
+    // The paper's uncorrected frame, measured as a roll about the bone against the swing frame.
+    const Eigen::Matrix3d naive = naive_bone_frame(d, rest);
+    const Eigen::Matrix3d swing = Eigen::Quaterniond::FromTwoVectors(rest, d).toRotationMatrix();
+    const Eigen::Matrix3d rel = swing.transpose() * naive;  // a rotation about +X
+    const double roll = std::atan2(rel(2, 1), rel(1, 1));
+    if (i > 0) naive_jump = std::max(naive_jump, std::abs(std::remainder(roll - prev_naive, 2 * M_PI)));
+    prev_naive = roll;
+    naive_roll_min = std::min(naive_roll_min, roll);
+    naive_roll_max = std::max(naive_roll_max, roll);
+  }
+  REQUIRE(worst_twist < 1e-9);
+  REQUIRE(worst_step_excess < 1e-4);  // radians; acos() near 0 is not more precise than this
+  // Without the correction the same motion rolls the bone all the way round.
+  REQUIRE(naive_roll_max - naive_roll_min > 1.5 * M_PI);
+}
+
+TEST_CASE("a missing joint invalidates its bone and the bones below it", "[rig]") {
+  SkeletonJoints j = tpose();
+  j[kLElbow] = Eigen::Vector3d::Constant(std::nan(""));
+  const SkeletonPose pose = solve_bones(j);
+  REQUIRE_FALSE(pose[kBoneLUpperArm].valid);
+  REQUIRE_FALSE(pose[kBoneLLowerArm].valid);
+  REQUIRE(pose[kBoneRLowerArm].valid);
+  j[kRHip] = Eigen::Vector3d::Constant(std::nan(""));
+  const SkeletonPose no_root = solve_bones(j);
+  for (int b = 0; b < kBoneCount; ++b) REQUIRE_FALSE(no_root[b].valid);
+}
+
+TEST_CASE("engine frames: a known rotation maps to the expected engine rotation", "[rig]") {
+  const Eigen::Quaterniond yaw90(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitY()));
+  // Unity mirrors X: a left turn becomes a right turn about the same up axis.
+  const Eigen::Quaterniond u = convert_rotation(yaw90, CoordFrame::unity);
+  REQUIRE(u.angularDistance(Eigen::Quaterniond(Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitY()))) < 1e-12);
+  // Godot turns the world half a turn about Y: a yaw stays the same yaw.
+  REQUIRE(convert_rotation(yaw90, CoordFrame::godot).angularDistance(yaw90) < 1e-12);
+  // Rotating then converting equals converting then rotating, for positions and rotations alike.
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> u1(-1, 1);
+  for (CoordFrame f : {CoordFrame::unity, CoordFrame::godot}) {
+    for (int n = 0; n < 100; ++n) {
+      const Eigen::Quaterniond q = Eigen::Quaterniond(u1(rng), u1(rng), u1(rng), u1(rng)).normalized();
+      const Eigen::Vector3d p(u1(rng), u1(rng), u1(rng));
+      REQUIRE((convert_rotation(q, f) * convert_position(p, f) - convert_position(q * p, f)).norm() < 1e-12);
+    }
+  }
+  REQUIRE(convert_position({1, 2, 3}, CoordFrame::unity) == Eigen::Vector3d(-1, 2, 3));
+  REQUIRE(convert_position({1, 2, 3}, CoordFrame::godot) == Eigen::Vector3d(-1, 2, -3));
+}
