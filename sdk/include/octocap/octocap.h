@@ -267,7 +267,7 @@ typedef struct octocap_session_config_t {
   float volume_min[3];           /**< Capture volume (world, metres). When min == max, it is derived from the calibration. */
   float volume_max[3];
   float filter_min_cutoff_hz;    /**< One Euro min cutoff. Default 1.5. */
-  float filter_beta;             /**< One Euro speed coefficient. Default 5. */
+  float filter_beta;             /**< One Euro speed coefficient (1/m). Default 20 (see README for the measurements). */
   uint32_t worker_threads;       /**< Threads used across joints; 0 = hardware concurrency, 1 = none. */
 } octocap_session_config_t;
 

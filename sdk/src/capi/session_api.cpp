@@ -116,7 +116,7 @@ void octocap_session_config_init(octocap_session_config_t* c) {
   c->min_confidence = 0.3f;
   c->outlier_threshold_px = 15.0f;
   c->filter_min_cutoff_hz = 1.5f;
-  c->filter_beta = 5.0f;
+  c->filter_beta = 20.0f;
   c->worker_threads = 0;
 }
 

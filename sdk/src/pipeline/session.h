@@ -33,7 +33,7 @@ struct SessionConfig {
   double outlier_threshold_px = 15;
   Eigen::AlignedBox3d volume;  // empty: derived from the calibration
   double filter_min_cutoff = 1.5;
-  double filter_beta = 5.0;
+  double filter_beta = 20.0;
   unsigned threads = 0;
 };
 
