@@ -261,7 +261,7 @@ typedef struct octocap_session_config_t {
   uint32_t min_views;            /**< Fewest views a joint is solved from. Default 2. */
   float delta_m;                 /**< Smallest cube edge, metres. Default 0.01. */
   float pixel_tolerance;         /**< Subdivision: a detection within this many pixels of a cube's projection supports it. Default 4. */
-  uint32_t max_candidates;       /**< Subdivision: candidate cubes kept per level (bounds the cost). Default 48. */
+  uint32_t max_candidates;       /**< Subdivision: candidate cubes kept per level, best supported and closest to the rays first (bounds the cost). Default 8. */
   float min_confidence;          /**< 2D keypoints below this confidence are treated as missing. Default 0.3. */
   float outlier_threshold_px;    /**< A view farther than this from the joint's reprojection is rejected. Default 15. */
   float volume_min[3];           /**< Capture volume (world, metres). When min == max, it is derived from the calibration. */

@@ -112,7 +112,7 @@ void octocap_session_config_init(octocap_session_config_t* c) {
   c->min_views = 2;
   c->delta_m = 0.01f;
   c->pixel_tolerance = 4.0f;
-  c->max_candidates = 48;
+  c->max_candidates = 8;
   c->min_confidence = 0.3f;
   c->outlier_threshold_px = 15.0f;
   c->filter_min_cutoff_hz = 1.5f;

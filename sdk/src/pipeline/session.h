@@ -28,7 +28,7 @@ struct SessionConfig {
   int min_views = 2;
   double delta = 0.01;
   double pixel_tolerance = 4;
-  int max_candidates = 48;
+  int max_candidates = 8;
   double min_confidence = 0.3;
   double outlier_threshold_px = 15;
   Eigen::AlignedBox3d volume;  // empty: derived from the calibration

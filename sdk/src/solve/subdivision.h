@@ -12,7 +12,7 @@ struct SubdivisionParams {
   int min_views = 2;
   double delta = 0.01;       // stop once a cube's edge is below this, metres
   double pixel_tolerance = 4;
-  int max_candidates = 48;   // candidate cubes kept per level
+  int max_candidates = 8;    // candidate cubes kept per level
   double max_reprojection_error_px = 15;  // a result its own views disagree with is retried with fewer views
   Eigen::AlignedBox3d volume;
 };
