@@ -68,7 +68,9 @@ int solve(const SolveOptions& o) {
   octocap_session_config_t cfg;
   octocap_session_config_init(&cfg);
   cfg.layout = layout;
-  cfg.method = o.method == "triangulation" ? OCTOCAP_METHOD_TRIANGULATION : OCTOCAP_METHOD_SUBDIVISION;
+  cfg.method = o.method == "triangulation" ? OCTOCAP_METHOD_TRIANGULATION
+               : o.method == "subdivision"  ? OCTOCAP_METHOD_SUBDIVISION
+                                            : OCTOCAP_METHOD_AUTO;
   cfg.filter = o.filter == "none" ? OCTOCAP_FILTER_NONE : OCTOCAP_FILTER_ONE_EURO;
   cfg.up_axis = o.up == "y" ? OCTOCAP_UP_Y : o.up == "z" ? OCTOCAP_UP_Z : OCTOCAP_UP_AUTO;
   cfg.sigma = o.sigma;
@@ -79,6 +81,9 @@ int solve(const SolveOptions& o) {
   SessionPtr session(session_raw);
   octocap_up_axis_t up = OCTOCAP_UP_Y;
   check(octocap_session_up_axis(session.get(), &up), "up axis");
+  octocap_method_t method = OCTOCAP_METHOD_AUTO;
+  check(octocap_session_method(session.get(), &method), "method");
+  const std::string method_name = method == OCTOCAP_METHOD_TRIANGULATION ? "triangulation" : "subdivision";
 
   octocap_motion_writer_t* trc = nullptr;
   check(octocap_motion_writer_create(o.output.c_str(), OCTOCAP_MOTION_TRC, layout, up, o.rate_hz, &trc), "--output");
@@ -166,7 +171,7 @@ int solve(const SolveOptions& o) {
   for (double e : errors) mean_err += e;
   mean_err = errors.empty() ? NAN : mean_err / errors.size();
   std::printf("octocap solve: %u frames x %u cameras, layout %s (%u keypoints), method %s, filter %s, up %s\n",
-              frames, views, octocap_layout_name(layout), K, o.method.c_str(), o.filter.c_str(),
+              frames, views, octocap_layout_name(layout), K, method_name.c_str(), o.filter.c_str(),
               up == OCTOCAP_UP_Z ? "Z" : "Y");
   std::printf("  frames solved:        %zu / %u (%zu with several people in a view)\n", frames_with_result, frames,
               frames_multi);

@@ -3,7 +3,7 @@
 
 struct SolveOptions {
   std::string calibration, keypoints, output, csv, ground_truth;
-  std::string method = "subdivision";
+  std::string method = "auto";
   std::string filter = "oneeuro";
   std::string layout = "auto";
   std::string up = "auto";

@@ -234,7 +234,9 @@ typedef struct octocap_session_t octocap_session_t;
 /** 3D method. */
 typedef enum octocap_method_t {
   OCTOCAP_METHOD_SUBDIVISION = 0,   /**< The paper's iterative space subdivision. */
-  OCTOCAP_METHOD_TRIANGULATION = 1  /**< Confidence-weighted DLT with outlier-view rejection. */
+  OCTOCAP_METHOD_TRIANGULATION = 1, /**< Confidence-weighted DLT with outlier-view rejection. */
+  OCTOCAP_METHOD_AUTO = 2           /**< Subdivision with 5 or more cameras, triangulation with fewer: what
+                                         measured more accurate for each (README, "Choosing the defaults"). */
 } octocap_method_t;
 
 /** Temporal filter. */
@@ -254,7 +256,7 @@ typedef enum octocap_up_axis_t {
 typedef struct octocap_session_config_t {
   uint32_t struct_size;          /**< sizeof(octocap_session_config_t). */
   octocap_layout_t layout;       /**< Keypoint layout of the 2D input (AUTO is not allowed here). Default BODY_25. */
-  octocap_method_t method;       /**< Default SUBDIVISION. */
+  octocap_method_t method;       /**< Default AUTO; see octocap_session_method() for the resolved one. */
   octocap_filter_t filter;       /**< Default ONE_EURO. */
   octocap_up_axis_t up_axis;     /**< Default AUTO; see octocap_session_up_axis() for the resolved one. */
   uint32_t sigma;                /**< Views a cube must be supported by. 0 = camera count - 1 (min 2). Clamped to the views that saw the joint, never below min_views. */
@@ -309,6 +311,9 @@ OCTOCAP_API octocap_result_t octocap_session_solve_keypoints(octocap_session_t* 
                                                              const octocap_keypoint2d_t* keypoints,
                                                              const uint32_t* people_per_view,
                                                              uint32_t view_count, int64_t timestamp_us);
+
+/** The 3D method in use (AUTO resolved at creation). */
+OCTOCAP_API octocap_result_t octocap_session_method(const octocap_session_t* session, octocap_method_t* out);
 
 /** The up axis in use (AUTO resolved to Y or Z at creation). */
 OCTOCAP_API octocap_result_t octocap_session_up_axis(const octocap_session_t* session, octocap_up_axis_t* out);

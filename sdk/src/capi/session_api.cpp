@@ -20,7 +20,8 @@ SessionConfig from_c(const octocap_session_config_t& c) {
   if (octocap_layout_keypoint_count(c.layout) == 0)
     throw Error(Errc::invalid_argument, "config.layout must be a concrete layout (not AUTO)");
   s.layout = static_cast<LayoutId>(c.layout);
-  if (c.method != OCTOCAP_METHOD_SUBDIVISION && c.method != OCTOCAP_METHOD_TRIANGULATION)
+  if (c.method != OCTOCAP_METHOD_SUBDIVISION && c.method != OCTOCAP_METHOD_TRIANGULATION &&
+      c.method != OCTOCAP_METHOD_AUTO)
     throw Error(Errc::invalid_argument, "config.method is not a known method");
   s.method = static_cast<Method>(c.method);
   if (c.filter != OCTOCAP_FILTER_NONE && c.filter != OCTOCAP_FILTER_ONE_EURO)
@@ -105,7 +106,7 @@ void octocap_session_config_init(octocap_session_config_t* c) {
   *c = octocap_session_config_t{};
   c->struct_size = sizeof(octocap_session_config_t);
   c->layout = OCTOCAP_LAYOUT_BODY_25;
-  c->method = OCTOCAP_METHOD_SUBDIVISION;
+  c->method = OCTOCAP_METHOD_AUTO;
   c->filter = OCTOCAP_FILTER_ONE_EURO;
   c->up_axis = OCTOCAP_UP_AUTO;
   c->sigma = 0;
@@ -170,6 +171,14 @@ octocap_result_t octocap_session_solve_keypoints(octocap_session_t* s, const oct
       }
     }
     session.solve(people, timestamp_us);
+  });
+}
+
+octocap_result_t octocap_session_method(const octocap_session_t* s, octocap_method_t* out) {
+  return capi::guard([&] {
+    capi::checked(s, "session");
+    capi::require(out, "out");
+    *out = s->session->method() == Method::triangulation ? OCTOCAP_METHOD_TRIANGULATION : OCTOCAP_METHOD_SUBDIVISION;
   });
 }
 

@@ -42,6 +42,10 @@ Session::Session(const SessionConfig& config, Calibration calib)
     if (volume_.isEmpty())
       throw Error(Errc::invalid_argument, "the cameras share no field of view; give the capture volume explicitly");
   }
+  // Measured (bench/, README): subdivision is the more accurate with 5+ views, triangulation with fewer.
+  method_ = config_.method != Method::automatic ? config_.method
+            : cams >= 5                         ? Method::subdivision
+                                                : Method::triangulation;
   z_up_ = config_.up == UpAxis::automatic ? guess_z_up(calib_) : config_.up == UpAxis::z;
   pool_ = std::make_unique<WorkerPool>(config_.threads);
   const size_t K = layout_->keypoints.size();
@@ -64,7 +68,7 @@ void Session::clear_frame() {
 }
 
 PointResult Session::solve_keypoint(const std::vector<ViewRay>& rays) const {
-  if (config_.method == Method::triangulation) {
+  if (method_ == Method::triangulation) {
     return solve_triangulation(calib_, rays, {config_.min_views, config_.outlier_threshold_px});
   }
   SubdivisionParams p;

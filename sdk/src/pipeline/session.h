@@ -16,12 +16,12 @@
 
 namespace octocap {
 
-enum class Method : int { subdivision = 0, triangulation = 1 };
+enum class Method : int { subdivision = 0, triangulation = 1, automatic = 2 };
 enum class UpAxis : int { y = 0, z = 1, automatic = 2 };
 
 struct SessionConfig {
   LayoutId layout = LayoutId::body25;
-  Method method = Method::subdivision;
+  Method method = Method::automatic;
   bool filter = true;
   UpAxis up = UpAxis::automatic;
   int sigma = 0;  // 0: camera count - 1, at least 2
@@ -68,6 +68,7 @@ class Session {
   const Eigen::AlignedBox3d& volume() const { return volume_; }
   int effective_sigma() const { return sigma_; }
   bool z_up() const { return z_up_; }
+  Method method() const { return method_; }
 
  private:
   PointResult solve_keypoint(const std::vector<ViewRay>& rays) const;
@@ -80,6 +81,7 @@ class Session {
   Eigen::AlignedBox3d volume_;
   int sigma_ = 2;
   bool z_up_ = false;
+  Method method_ = Method::subdivision;
   std::unique_ptr<WorkerPool> pool_;
 
   std::vector<PointResult> keypoints_;
