@@ -17,6 +17,8 @@
  *   added later get defaults and old callers keep working.
  * - Buffers are owned by the caller, with explicit capacities. Where the size is unknown, call with a NULL
  *   buffer to learn the count, then call again.
+ * - Enumerations are plain `int32_t` typedefs with named constants, so their size is fixed in every
+ *   language and an out-of-range value is an error code, not undefined behaviour.
  * - Per-frame structs are blittable (fixed-width integers and floats, no pointers, no bool) and can be mapped
  *   1:1 from C# with `[StructLayout(LayoutKind.Sequential)]`.
  *
@@ -62,7 +64,9 @@ extern "C" {
 /** @{ */
 
 /** Result of every fallible call. */
-typedef enum octocap_result_t {
+typedef int32_t octocap_result_t;
+/** Values of ::octocap_result_t. */
+enum octocap_result_values {
   OCTOCAP_OK = 0,                        /**< Success. */
   OCTOCAP_ERROR_INVALID_ARGUMENT = -1,   /**< A NULL pointer, wrong size, NaN or out-of-range value. */
   OCTOCAP_ERROR_INVALID_HANDLE = -2,     /**< NULL, destroyed or wrong-type handle. */
@@ -75,7 +79,7 @@ typedef enum octocap_result_t {
   OCTOCAP_ERROR_NO_RESULT = -9,          /**< Nothing solved yet (query before the first solve). */
   OCTOCAP_ERROR_UNSUPPORTED = -10,       /**< A feature this build does not include. */
   OCTOCAP_ERROR_INTERNAL = -99           /**< A bug: please report it with the message. */
-} octocap_result_t;
+};
 
 /** Library version as "MAJOR.MINOR.PATCH". The string is static. */
 OCTOCAP_API const char* octocap_version(void);
@@ -90,12 +94,14 @@ OCTOCAP_API const char* octocap_result_name(octocap_result_t result);
 OCTOCAP_API const char* octocap_last_error(void);
 
 /** Log levels. */
-typedef enum octocap_log_level_t {
+typedef int32_t octocap_log_level_t;
+/** Values of ::octocap_log_level_t. */
+enum octocap_log_level_values {
   OCTOCAP_LOG_DEBUG = 0,
   OCTOCAP_LOG_INFO = 1,
   OCTOCAP_LOG_WARNING = 2,
   OCTOCAP_LOG_ERROR = 3
-} octocap_log_level_t;
+};
 
 /** Log sink. May be called from any thread, including library worker threads; must not call back into octocap. */
 typedef void (*octocap_log_callback_t)(octocap_log_level_t level, const char* message, void* user);
@@ -112,13 +118,15 @@ OCTOCAP_API void octocap_set_log_callback(octocap_log_callback_t callback, octoc
 /** @{ */
 
 /** 2D keypoint layouts octocap reads. A layout is a table: names, order and mapping onto the skeleton. */
-typedef enum octocap_layout_t {
+typedef int32_t octocap_layout_t;
+/** Values of ::octocap_layout_t. */
+enum octocap_layout_values {
   OCTOCAP_LAYOUT_AUTO = 0,      /**< Detect from the keypoint count (25 is taken as BODY_25). */
   OCTOCAP_LAYOUT_BODY_25 = 1,   /**< OpenPose BODY_25. */
   OCTOCAP_LAYOUT_BODY_25B = 2,  /**< OpenPose experimental BODY_25B (Pose2Sim's demo): COCO order + neck, head, feet. */
   OCTOCAP_LAYOUT_COCO_17 = 3,   /**< COCO-17 (MoveNet, RTMPose, YOLO-pose). */
   OCTOCAP_LAYOUT_HALPE_26 = 4   /**< HALPE-26 (AlphaPose, RTMPose body7 halpe26). */
-} octocap_layout_t;
+};
 
 /** Number of keypoints of a layout (0 for an unknown or AUTO layout). */
 OCTOCAP_API uint32_t octocap_layout_keypoint_count(octocap_layout_t layout);
@@ -130,7 +138,9 @@ OCTOCAP_API octocap_result_t octocap_layout_from_name(const char* name, octocap_
 OCTOCAP_API const char* octocap_layout_keypoint_name(octocap_layout_t layout, uint32_t index);
 
 /** The paper's skeleton: 14 joints plus a root at the hip centre. */
-typedef enum octocap_joint_id_t {
+typedef int32_t octocap_joint_id_t;
+/** Values of ::octocap_joint_id_t. */
+enum octocap_joint_id_values {
   OCTOCAP_JOINT_HEAD = 0,
   OCTOCAP_JOINT_NECK = 1,
   OCTOCAP_JOINT_R_SHOULDER = 2,
@@ -147,13 +157,15 @@ typedef enum octocap_joint_id_t {
   OCTOCAP_JOINT_L_FOOT = 13,
   OCTOCAP_JOINT_ROOT = 14,
   OCTOCAP_JOINT_COUNT = 15
-} octocap_joint_id_t;
+};
 
 /**
  * Bones of the rig. ROOT carries the global orientation of the pelvis; every other bone goes from a parent
  * joint to a child joint and rotates relative to its parent bone.
  */
-typedef enum octocap_bone_id_t {
+typedef int32_t octocap_bone_id_t;
+/** Values of ::octocap_bone_id_t. */
+enum octocap_bone_id_values {
   OCTOCAP_BONE_ROOT = 0,
   OCTOCAP_BONE_TORSO = 1,
   OCTOCAP_BONE_HEAD = 2,
@@ -168,7 +180,7 @@ typedef enum octocap_bone_id_t {
   OCTOCAP_BONE_L_UPPER_LEG = 11,
   OCTOCAP_BONE_L_LOWER_LEG = 12,
   OCTOCAP_BONE_COUNT = 13
-} octocap_bone_id_t;
+};
 
 /** Static name of a skeleton joint ("r_elbow") or NULL. */
 OCTOCAP_API const char* octocap_joint_name(uint32_t joint);
@@ -232,25 +244,31 @@ OCTOCAP_API void octocap_calibration_destroy(octocap_calibration_t* calib);
 typedef struct octocap_session_t octocap_session_t;
 
 /** 3D method. */
-typedef enum octocap_method_t {
+typedef int32_t octocap_method_t;
+/** Values of ::octocap_method_t. */
+enum octocap_method_values {
   OCTOCAP_METHOD_SUBDIVISION = 0,   /**< The paper's iterative space subdivision. */
   OCTOCAP_METHOD_TRIANGULATION = 1, /**< Confidence-weighted DLT with outlier-view rejection. */
   OCTOCAP_METHOD_AUTO = 2           /**< Subdivision with 5 or more cameras, triangulation with fewer: what
                                          measured more accurate for each (README, "Choosing the defaults"). */
-} octocap_method_t;
+};
 
 /** Temporal filter. */
-typedef enum octocap_filter_t {
+typedef int32_t octocap_filter_t;
+/** Values of ::octocap_filter_t. */
+enum octocap_filter_values {
   OCTOCAP_FILTER_NONE = 0,
   OCTOCAP_FILTER_ONE_EURO = 1  /**< Causal One Euro filter: smooth when slow, no lag when fast. */
-} octocap_filter_t;
+};
 
 /** Up axis of the calibration's world frame. */
-typedef enum octocap_up_axis_t {
+typedef int32_t octocap_up_axis_t;
+/** Values of ::octocap_up_axis_t. */
+enum octocap_up_axis_values {
   OCTOCAP_UP_Y = 0,    /**< Y up (octocap's convention). */
   OCTOCAP_UP_Z = 1,    /**< Z up (Qualisys, Pose2Sim calibrations, most lab systems). */
   OCTOCAP_UP_AUTO = 2  /**< Decide from the cameras: upright cameras' image "down" axes point to world down. */
-} octocap_up_axis_t;
+};
 
 /** Session configuration. Fill with octocap_session_config_init() first. */
 typedef struct octocap_session_config_t {
@@ -358,11 +376,13 @@ OCTOCAP_API octocap_result_t octocap_session_get_selected_people(const octocap_s
                                                                  uint32_t capacity, uint32_t* count);
 
 /** Coordinate frame for bone queries. */
-typedef enum octocap_coord_frame_t {
+typedef int32_t octocap_coord_frame_t;
+/** Values of ::octocap_coord_frame_t. */
+enum octocap_coord_frame_values {
   OCTOCAP_FRAME_RIG = 0,    /**< Right-handed, Y up, character faces +Z in the T-pose. */
   OCTOCAP_FRAME_UNITY = 1,  /**< Left-handed, Y up, +Z forward (X mirrored). */
   OCTOCAP_FRAME_GODOT = 2   /**< Right-handed, Y up, character faces -Z (turned 180 degrees about Y). */
-} octocap_coord_frame_t;
+};
 
 /** Quaternion (x, y, z, w). */
 typedef struct octocap_quat_t {
@@ -437,10 +457,12 @@ OCTOCAP_API octocap_result_t octocap_recording_read_frame(octocap_recording_t* r
 typedef struct octocap_motion_writer_t octocap_motion_writer_t;
 
 /** File formats of ::octocap_motion_writer_t. */
-typedef enum octocap_motion_format_t {
+typedef int32_t octocap_motion_format_t;
+/** Values of ::octocap_motion_format_t. */
+enum octocap_motion_format_values {
   OCTOCAP_MOTION_TRC = 0, /**< OpenSim TRC, Y up (Z-up worlds are turned as Pose2Sim does), metres. */
   OCTOCAP_MOTION_CSV = 1  /**< `frame,NAME_x,NAME_y,NAME_z,...`, calibration world frame, empty cells when missing. */
-} octocap_motion_format_t;
+};
 
 /**
  * Creates a writer. The file is written on octocap_motion_writer_close() (TRC needs the frame count in its
