@@ -228,6 +228,12 @@ TEST_CASE("solving is deterministic, whatever the thread count", "[capi]") {
   }
 }
 
+extern "C" int octocap_c_consumer_check(const char* calibration_path);
+
+TEST_CASE("the header works from strict C99", "[capi]") {
+  REQUIRE(octocap_c_consumer_check(OCTOCAP_SOURCE_DIR "/data/sample/calibration.toml") == 1);
+}
+
 TEST_CASE("skeleton definition queries", "[capi]") {
   octocap_bone_info_t info;
   REQUIRE(octocap_bone_info(OCTOCAP_BONE_L_LOWER_ARM, &info) == OCTOCAP_OK);
@@ -237,6 +243,14 @@ TEST_CASE("skeleton definition queries", "[capi]") {
   REQUIRE(info.tail_joint == OCTOCAP_JOINT_L_HAND);
   REQUIRE(info.rest_direction[0] == 1.0f);
   REQUIRE(std::string(octocap_joint_name(OCTOCAP_JOINT_ROOT)) == "root");
+  const Scene sc = make_scene(3, 1);
+  testing::Session s = testing::make_session(sc.calib.get(), config(OCTOCAP_METHOD_AUTO));
+  uint32_t counter = 0;
+  REQUIRE(octocap_session_definition_counter(s.get(), &counter) == OCTOCAP_OK);
+  REQUIRE(counter >= 1);
+  octocap_method_t method = OCTOCAP_METHOD_AUTO;
+  REQUIRE(octocap_session_method(s.get(), &method) == OCTOCAP_OK);
+  REQUIRE(method == OCTOCAP_METHOD_TRIANGULATION);  // auto picks triangulation below 5 cameras
   for (uint32_t b = 1; b < OCTOCAP_BONE_COUNT; ++b) {
     REQUIRE(octocap_bone_info(b, &info) == OCTOCAP_OK);
     REQUIRE(info.parent_bone >= 0);
