@@ -27,6 +27,10 @@ using CalibPtr = std::unique_ptr<octocap_calibration_t, Deleter<octocap_calibrat
 using SessionPtr = std::unique_ptr<octocap_session_t, Deleter<octocap_session_t, octocap_session_destroy>>;
 using RecordingPtr = std::unique_ptr<octocap_recording_t, Deleter<octocap_recording_t, octocap_recording_destroy>>;
 
+// Closing writes the file, and can fail: done explicitly on success; on an error path it only frees.
+void discard_writer(octocap_motion_writer_t* w) { octocap_motion_writer_close(w); }
+using WriterPtr = std::unique_ptr<octocap_motion_writer_t, Deleter<octocap_motion_writer_t, discard_writer>>;
+
 double median(std::vector<double> v) {
   if (v.empty()) return NAN;
   std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
@@ -85,13 +89,15 @@ int solve(const SolveOptions& o) {
   check(octocap_session_method(session.get(), &method), "method");
   const std::string method_name = method == OCTOCAP_METHOD_TRIANGULATION ? "triangulation" : "subdivision";
 
-  octocap_motion_writer_t* trc = nullptr;
-  check(octocap_motion_writer_create(o.output.c_str(), OCTOCAP_MOTION_TRC, layout, up, o.rate_hz, &trc), "--output");
-  octocap_motion_writer_t* csv = nullptr;
+  octocap_motion_writer_t* raw = nullptr;
+  check(octocap_motion_writer_create(o.output.c_str(), OCTOCAP_MOTION_TRC, layout, up, o.rate_hz, &raw), "--output");
+  WriterPtr trc(raw);
+  raw = nullptr;
   if (!o.csv.empty())
-    check(octocap_motion_writer_create(o.csv.c_str(), OCTOCAP_MOTION_CSV, layout, up, o.rate_hz, &csv), "--csv");
+    check(octocap_motion_writer_create(o.csv.c_str(), OCTOCAP_MOTION_CSV, layout, up, o.rate_hz, &raw), "--csv");
+  WriterPtr csv(raw);
   auto add_frame = [&](bool solved) {
-    for (octocap_motion_writer_t* w : {trc, csv}) {
+    for (octocap_motion_writer_t* w : {trc.get(), csv.get()}) {
       if (!w) continue;
       check(solved ? octocap_motion_writer_add_frame(w, session.get()) : octocap_motion_writer_add_empty_frame(w),
             "writing a frame");
@@ -164,8 +170,8 @@ int solve(const SolveOptions& o) {
   if (!o.quiet && frames >= 50) std::fprintf(stderr, "\n");
   const double total_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  check(octocap_motion_writer_close(trc), "writing the TRC");
-  if (csv) check(octocap_motion_writer_close(csv), "writing the CSV");
+  check(octocap_motion_writer_close(trc.release()), "writing the TRC");
+  if (csv) check(octocap_motion_writer_close(csv.release()), "writing the CSV");
 
   double mean_err = 0;
   for (double e : errors) mean_err += e;

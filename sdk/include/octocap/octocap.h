@@ -343,7 +343,8 @@ OCTOCAP_API octocap_result_t octocap_session_reset(octocap_session_t* session);
 typedef struct octocap_joint_t {
   float position[3];           /**< World frame of the calibration, metres. Zero when missing. */
   float confidence;            /**< Mean 2D confidence of the supporting views; 0 when missing. */
-  float reprojection_error_px; /**< Mean distance between the reprojection and the supporting detections. */
+  float reprojection_error_px; /**< Mean distance (px) between the reprojection of the solved point (before the
+                                    temporal filter) and the supporting detections. */
   uint32_t views_used;         /**< Number of views that supported the point. */
   uint32_t valid;              /**< 1 when solved, 0 when missing (never a guess). */
 } octocap_joint_t;
