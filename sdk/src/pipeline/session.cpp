@@ -95,9 +95,24 @@ void Session::solve(const std::vector<std::vector<Person2D>>& people, int64_t ti
                                                 std::to_string(p.size()) + " keypoints, layout " + layout_->name +
                                                 " has " + std::to_string(K));
 
-  selected_ = select_people(calib_, people, raw_previous_, {config_.min_confidence, 2 * config_.outlier_threshold_px});
+  // A "person" without three confident keypoints (all NaN, all below min_confidence) is nobody: it must
+  // not count as a view that saw someone.
+  std::vector<std::vector<Person2D>> usable(V);
+  std::vector<std::vector<int>> original(V);
+  for (size_t v = 0; v < V; ++v)
+    for (size_t p = 0; p < people[v].size(); ++p) {
+      int confident = 0;
+      for (const Keypoint2D& k : people[v][p]) confident += k.confidence >= config_.min_confidence;
+      if (confident < 3) continue;
+      usable[v].push_back(people[v][p]);
+      original[v].push_back(static_cast<int>(p));
+    }
+  selected_ = select_people(calib_, usable, raw_previous_, {config_.min_confidence, 2 * config_.outlier_threshold_px});
   uint32_t with_person = 0;
   for (int s : selected_) with_person += s >= 0;
+  std::vector<int> selected_usable = selected_;
+  for (size_t v = 0; v < V; ++v)
+    if (selected_[v] >= 0) selected_[v] = original[v][selected_[v]];  // report indices into the caller's list
 
   const double dt = info_.frame_index >= 0 ? (timestamp_us - last_timestamp_us_) * 1e-6 : 0.0;
   ++info_.frame_index;
@@ -121,8 +136,8 @@ void Session::solve(const std::vector<std::vector<Person2D>>& people, int64_t ti
     std::vector<ViewRay> rays;
     rays.reserve(V);
     for (size_t v = 0; v < V; ++v) {
-      if (selected_[v] < 0) continue;
-      const Keypoint2D& kp = people[v][selected_[v]][k];
+      if (selected_usable[v] < 0) continue;
+      const Keypoint2D& kp = usable[v][selected_usable[v]][k];
       if (!(kp.confidence >= config_.min_confidence) || !std::isfinite(kp.x) || !std::isfinite(kp.y)) continue;
       rays.push_back(make_view_ray(calib_[v], static_cast<int>(v), {kp.x, kp.y}, kp.confidence));
     }

@@ -1,0 +1,27 @@
+// SafeHandles: the runtime guarantees one destroy per handle, also when a finalizer runs it.
+using System;
+using System.Runtime.InteropServices;
+
+namespace Octocap
+{
+    public sealed class CalibrationHandle : SafeHandle
+    {
+        public CalibrationHandle() : base(IntPtr.Zero, true) { }
+        public override bool IsInvalid => handle == IntPtr.Zero;
+        protected override bool ReleaseHandle() { NativeMethods.octocap_calibration_destroy(handle); return true; }
+    }
+
+    public sealed class SessionHandle : SafeHandle
+    {
+        public SessionHandle() : base(IntPtr.Zero, true) { }
+        public override bool IsInvalid => handle == IntPtr.Zero;
+        protected override bool ReleaseHandle() { NativeMethods.octocap_session_destroy(handle); return true; }
+    }
+
+    public sealed class RecordingHandle : SafeHandle
+    {
+        public RecordingHandle() : base(IntPtr.Zero, true) { }
+        public override bool IsInvalid => handle == IntPtr.Zero;
+        protected override bool ReleaseHandle() { NativeMethods.octocap_recording_destroy(handle); return true; }
+    }
+}

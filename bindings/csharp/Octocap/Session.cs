@@ -1,0 +1,103 @@
+using System;
+using System.Runtime.InteropServices;
+
+namespace Octocap
+{
+    /// <summary>A capture session: 2D keypoints of N views in, 3D keypoints, joints and bone rotations out.
+    /// One thread at a time; no allocation per frame in Solve or the Get* calls.</summary>
+    public sealed class Session : IDisposable
+    {
+        internal readonly SessionHandle Handle;
+        public int KeypointCount { get; }
+
+        public Session(SessionConfig config, Calibration calibration)
+        {
+            if (calibration == null) throw new ArgumentNullException(nameof(calibration));
+            SessionHandle h;
+            OctocapException.Check(NativeMethods.octocap_session_create(ref config, calibration.Handle, out h));
+            Handle = h;
+            KeypointCount = Library.KeypointCount(config.Layout);
+        }
+
+        /// <summary>One person per view: <paramref name="keypoints"/> holds viewCount x KeypointCount keypoints.</summary>
+        public unsafe void Solve(ReadOnlySpan<Keypoint2D> keypoints, int viewCount, long timestampUs)
+        {
+            if (keypoints.Length < viewCount * KeypointCount)
+                throw new OctocapException(Result.InvalidArgument, "keypoints holds " + keypoints.Length + ", " +
+                                           viewCount + " views need " + viewCount * KeypointCount);
+            fixed (Keypoint2D* p = &MemoryMarshal.GetReference(keypoints))
+                OctocapException.Check(NativeMethods.octocap_session_solve_keypoints(Handle, p, null, (uint)viewCount, timestampUs));
+        }
+
+        /// <summary>Several people per view: for each view its people, one after the other.</summary>
+        public unsafe void Solve(ReadOnlySpan<Keypoint2D> keypoints, ReadOnlySpan<uint> peoplePerView, long timestampUs)
+        {
+            long needed = 0;
+            foreach (uint n in peoplePerView) needed += n * (long)KeypointCount;
+            if (keypoints.Length < needed)
+                throw new OctocapException(Result.InvalidArgument, "keypoints holds " + keypoints.Length + ", the people need " + needed);
+            fixed (Keypoint2D* p = &MemoryMarshal.GetReference(keypoints))
+            fixed (uint* ppv = &MemoryMarshal.GetReference(peoplePerView))
+                OctocapException.Check(NativeMethods.octocap_session_solve_keypoints(Handle, p, ppv, (uint)peoplePerView.Length, timestampUs));
+        }
+
+        public void Reset() => OctocapException.Check(NativeMethods.octocap_session_reset(Handle));
+
+        public Method Method
+        {
+            get { Method m; OctocapException.Check(NativeMethods.octocap_session_method(Handle, out m)); return m; }
+        }
+
+        public UpAxis UpAxis
+        {
+            get { UpAxis u; OctocapException.Check(NativeMethods.octocap_session_up_axis(Handle, out u)); return u; }
+        }
+
+        public FrameInfo FrameInfo
+        {
+            get { FrameInfo f; OctocapException.Check(NativeMethods.octocap_session_get_frame_info(Handle, out f)); return f; }
+        }
+
+        public uint DefinitionCounter
+        {
+            get { uint c; OctocapException.Check(NativeMethods.octocap_session_definition_counter(Handle, out c)); return c; }
+        }
+
+        /// <summary>Fills <paramref name="output"/> with the layout keypoints in 3D; returns how many.</summary>
+        public unsafe int GetKeypoints3D(Span<Joint> output)
+        {
+            uint n;
+            fixed (Joint* p = &MemoryMarshal.GetReference(output))
+                OctocapException.Check(NativeMethods.octocap_session_get_keypoints3d(Handle, p, (uint)output.Length, out n));
+            return (int)n;
+        }
+
+        /// <summary>Fills <paramref name="output"/> with the 15 skeleton joints; returns how many.</summary>
+        public unsafe int GetJoints(Span<Joint> output)
+        {
+            uint n;
+            fixed (Joint* p = &MemoryMarshal.GetReference(output))
+                OctocapException.Check(NativeMethods.octocap_session_get_joints(Handle, p, (uint)output.Length, out n));
+            return (int)n;
+        }
+
+        /// <summary>Fills <paramref name="output"/> with the bone poses in <paramref name="frame"/>; returns how many.</summary>
+        public unsafe int GetBones(CoordFrame frame, Span<BonePose> output)
+        {
+            uint n;
+            fixed (BonePose* p = &MemoryMarshal.GetReference(output))
+                OctocapException.Check(NativeMethods.octocap_session_get_bones(Handle, frame, p, (uint)output.Length, out n));
+            return (int)n;
+        }
+
+        public unsafe int GetSelectedPeople(Span<int> output)
+        {
+            uint n;
+            fixed (int* p = &MemoryMarshal.GetReference(output))
+                OctocapException.Check(NativeMethods.octocap_session_get_selected_people(Handle, p, (uint)output.Length, out n));
+            return (int)n;
+        }
+
+        public void Dispose() => Handle.Dispose();
+    }
+}

@@ -1,0 +1,108 @@
+using System;
+using NUnit.Framework;
+using Octocap.Avatar;
+
+namespace Octocap.Tests
+{
+    [TestFixture]
+    public class AvatarTests
+    {
+        [Test]
+        public void EveryBoneHasAnEngineName()
+        {
+            Assert.AreEqual((int)BoneId.Count, BoneNames.UnityHumanBodyBones.Length);
+            Assert.AreEqual((int)BoneId.Count, BoneNames.GodotHumanoid.Length);
+            Assert.AreEqual("Hips", BoneNames.UnityHumanBodyBones[(int)BoneId.Root]);
+            Assert.AreEqual("LeftLowerArm", BoneNames.UnityHumanBodyBones[(int)BoneId.LLowerArm]);
+            Assert.AreEqual("RightUpperLeg", BoneNames.GodotHumanoid[(int)BoneId.RUpperLeg]);
+        }
+
+        /// <summary>A person turned 90 degrees to their left, solved by the library, comes out in each engine's frame.</summary>
+        [Test]
+        public void KnownRotationMapsToTheExpectedEngineRotation()
+        {
+            using (var calib = Calibration.Load(TestEnv.Sample + "/calibration.toml"))
+            {
+                SessionConfig cfg = SessionConfig.Default;
+                cfg.Filter = Filter.None;
+                cfg.Method = Method.Triangulation;
+                using (var session = new Session(cfg, calib))
+                {
+                    // A T-posed body (rig frame: left is +X, facing +Z), turned 90 degrees about +Y, projected.
+                    float[,] tpose = TPoseBody25();
+                    Quat yaw = QuatMath.FromAxisAngle(0, 1, 0, (float)(Math.PI / 2));
+                    var kps = new Keypoint2D[5 * 25];
+                    for (int v = 0; v < 5; ++v)
+                        for (int k = 0; k < 25; ++k)
+                        {
+                            float x = tpose[k, 0], y = tpose[k, 1], z = tpose[k, 2];
+                            QuatMath.Rotate(yaw, ref x, ref y, ref z);
+                            double u, w;
+                            calib.Project(v, x, y, z, out u, out w);
+                            kps[v * 25 + k] = new Keypoint2D((float)u, (float)w, 0.9f);
+                        }
+                    session.Solve(kps, 5, 0);
+                    var bones = new BonePose[(int)BoneId.Count];
+                    session.GetBones(CoordFrame.Rig, bones);
+                    Assert.Less(QuatMath.Angle(bones[(int)BoneId.Root].GlobalRotation, yaw), 0.02);
+                    // Unity mirrors X: a left turn is a right turn there.
+                    session.GetBones(CoordFrame.Unity, bones);
+                    Assert.Less(QuatMath.Angle(bones[(int)BoneId.Root].GlobalRotation, QuatMath.FromAxisAngle(0, 1, 0, (float)(-Math.PI / 2))), 0.02);
+                    // Godot turns the world half a turn about Y: a yaw stays a yaw.
+                    session.GetBones(CoordFrame.Godot, bones);
+                    Assert.Less(QuatMath.Angle(bones[(int)BoneId.Root].GlobalRotation, yaw), 0.02);
+                    Assert.Less(QuatMath.Angle(bones[(int)BoneId.LLowerArm].LocalRotation, QuatMath.Identity), 0.05);
+                }
+            }
+        }
+
+        static float[,] TPoseBody25()
+        {
+            // Nose, Neck, RShoulder, RElbow, RWrist, LShoulder, LElbow, LWrist, MidHip, RHip, RKnee, RAnkle, LHip,
+            // LKnee, LAnkle, REye, LEye, REar, LEar, LBigToe, LSmallToe, LHeel, RBigToe, RSmallToe, RHeel
+            return new float[,]
+            {
+                { 0, 1.62f, 0.1f }, { 0, 1.45f, 0 }, { -0.2f, 1.45f, 0 }, { -0.5f, 1.45f, 0 }, { -0.75f, 1.45f, 0 },
+                { 0.2f, 1.45f, 0 }, { 0.5f, 1.45f, 0 }, { 0.75f, 1.45f, 0 }, { 0, 0.95f, 0 }, { -0.1f, 0.95f, 0 },
+                { -0.1f, 0.5f, 0 }, { -0.1f, 0.08f, 0 }, { 0.1f, 0.95f, 0 }, { 0.1f, 0.5f, 0 }, { 0.1f, 0.08f, 0 },
+                { -0.035f, 1.65f, 0.08f }, { 0.035f, 1.65f, 0.08f }, { -0.075f, 1.62f, 0 }, { 0.075f, 1.62f, 0 },
+                { 0.1f, 0.02f, 0.15f }, { 0.15f, 0.02f, 0.13f }, { 0.1f, 0.02f, -0.05f }, { -0.1f, 0.02f, 0.15f },
+                { -0.15f, 0.02f, 0.13f }, { -0.1f, 0.02f, -0.05f }
+            };
+        }
+
+        [Test]
+        public void RetargeterAppliesRotationsOnTopOfTheAvatarsRest()
+        {
+            var r = new AvatarRetargeter();
+            var rest = new Quat[(int)BoneId.Count];
+            for (int b = 0; b < rest.Length; ++b) rest[b] = QuatMath.FromAxisAngle(1, 0, 0, 0.1f * b + 0.01f);
+            var present = new bool[rest.Length];
+            for (int b = 0; b < present.Length; ++b) present[b] = b != (int)BoneId.Head;
+            r.CalibrateTPose(rest, present);
+            var bones = new BonePose[(int)BoneId.Count];
+            Quat turn = QuatMath.FromAxisAngle(0, 0, 1, 0.7f);
+            for (int b = 0; b < bones.Length; ++b) { bones[b].GlobalRotation = turn; bones[b].Valid = 1; }
+            bones[(int)BoneId.RLowerLeg].Valid = 0;
+            Quat[] world = r.Update(bones);
+            Assert.Less(QuatMath.Angle(world[(int)BoneId.Torso], QuatMath.Multiply(turn, rest[(int)BoneId.Torso])), 1e-5);
+            Assert.Less(QuatMath.Angle(world[(int)BoneId.RLowerLeg], rest[(int)BoneId.RLowerLeg]), 1e-5);  // unsolved: kept
+            Assert.IsFalse(r.Drives(BoneId.Head));
+
+            // With smoothing, a jump is approached over frames, never overshot.
+            r.Smoothing = 0.5f;
+            Quat turn2 = QuatMath.FromAxisAngle(0, 0, 1, -0.7f);
+            for (int b = 0; b < bones.Length; ++b) bones[b].GlobalRotation = turn2;
+            Quat target = QuatMath.Multiply(turn2, rest[(int)BoneId.Torso]);
+            float last = QuatMath.Angle(r.Update(bones)[(int)BoneId.Torso], target);
+            Assert.Greater(last, 0.3f);
+            for (int i = 0; i < 20; ++i)
+            {
+                float now = QuatMath.Angle(r.Update(bones)[(int)BoneId.Torso], target);
+                Assert.LessOrEqual(now, last + 1e-6f);
+                last = now;
+            }
+            Assert.Less(last, 1e-3f);
+        }
+    }
+}
