@@ -19,5 +19,6 @@ $SUDO apt-get install -y -q --no-install-recommends \
   libeigen3-dev \
   libtomlplusplus-dev nlohmann-json3-dev libcli11-dev \
   libopencv-core-dev libopencv-calib3d-dev \
-  assimp-testmodels python3 python3-pip
+  assimp-testmodels python3 python3-pip \
+  mono-devel nunit-console libnunit-cil-dev
 $SUDO apt-get install -y -q --no-install-recommends -t bookworm-backports libcatch2-dev

@@ -9,7 +9,7 @@ Eigen::AlignedBox3d derive_capture_volume(const Calibration& calib, double max_r
   Eigen::AlignedBox3d rig;
   for (const Camera& c : calib) rig.extend(c.center());
   const Eigen::Vector3d lo = rig.min().array() - max_range, hi = rig.max().array() + max_range;
-  constexpr int kSteps = 40;
+  constexpr int kSteps = 32;
   const Eigen::Vector3d step = (hi - lo) / kSteps;
   const int need = calib.size() <= 2 ? static_cast<int>(calib.size()) : 2;
   Eigen::AlignedBox3d seen;
@@ -19,6 +19,7 @@ Eigen::AlignedBox3d derive_capture_volume(const Calibration& calib, double max_r
         const Eigen::Vector3d p = lo + Eigen::Vector3d(i * step.x(), j * step.y(), k * step.z());
         int views = 0;
         for (const Camera& c : calib) {
+          if (views >= need) break;
           const Eigen::Vector3d pc = c.to_camera(p);
           // Closer than 0.3 m or farther than max_range is not where a person is filmed.
           if (pc.z() < 0.3 || pc.norm() > max_range) continue;

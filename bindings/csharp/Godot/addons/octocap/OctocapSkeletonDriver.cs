@@ -1,0 +1,65 @@
+// Thin Godot 4 adapter: reads octocap bones in Godot's frame and poses a Skeleton3D by bone name. The logic
+// (names, retargeting, smoothing) is in Octocap.Avatar, engine-free and tested.
+using Godot;
+using Octocap;
+using Octocap.Avatar;
+
+public partial class OctocapSkeletonDriver : Node3D
+{
+    [Export] public NodePath SkeletonPath;
+    [Export] public float Smoothing = 0.3f;
+    /// <summary>Skeleton bone name per octocap bone (BoneId order); empty = Godot's humanoid profile names.</summary>
+    [Export] public string[] BoneNameOverrides = new string[0];
+
+    public Session Session { get; set; }
+
+    readonly AvatarRetargeter _retargeter = new AvatarRetargeter();
+    readonly BonePose[] _bones = new BonePose[(int)BoneId.Count];
+    Skeleton3D _skeleton;
+    int[] _index;
+
+    public override void _Ready()
+    {
+        Library.CheckAbi();
+        _skeleton = GetNode<Skeleton3D>(SkeletonPath);
+        _index = new int[(int)BoneId.Count];
+        for (int b = 0; b < _index.Length; ++b)
+        {
+            string name = b < BoneNameOverrides.Length && BoneNameOverrides[b] != "" ? BoneNameOverrides[b] : BoneNames.GodotHumanoid[b];
+            _index[b] = _skeleton.FindBone(name);
+        }
+    }
+
+    /// <summary>Call with the skeleton in its T-pose.</summary>
+    public void CalibrateTPose()
+    {
+        var rest = new Quat[_index.Length];
+        var present = new bool[_index.Length];
+        for (int b = 0; b < _index.Length; ++b)
+        {
+            present[b] = _index[b] >= 0;
+            rest[b] = present[b] ? ToOctocap(_skeleton.GetBoneGlobalPose(_index[b]).Basis.GetRotationQuaternion()) : QuatMath.Identity;
+        }
+        _retargeter.CalibrateTPose(rest, present);
+    }
+
+    public override void _Process(double delta)
+    {
+        if (Session == null || !_retargeter.IsCalibrated) return;
+        try { Session.GetBones(CoordFrame.Godot, _bones); }
+        catch (OctocapException) { return; }
+        _retargeter.Smoothing = Smoothing;
+        Quat[] world = _retargeter.Update(_bones);
+        // Parents come before children in BoneId order, so each parent's new global pose is already set.
+        for (int b = 0; b < _index.Length; ++b)
+        {
+            if (_index[b] < 0 || !_retargeter.Drives((BoneId)b)) continue;
+            int parent = _skeleton.GetBoneParent(_index[b]);
+            Quaternion parentGlobal = parent >= 0 ? _skeleton.GetBoneGlobalPose(parent).Basis.GetRotationQuaternion() : Quaternion.Identity;
+            _skeleton.SetBonePoseRotation(_index[b], parentGlobal.Inverse() * ToGodot(world[b]));
+        }
+    }
+
+    static Quaternion ToGodot(Quat q) => new Quaternion(q.X, q.Y, q.Z, q.W);
+    static Quat ToOctocap(Quaternion q) => new Quat(q.X, q.Y, q.Z, q.W);
+}

@@ -1,0 +1,65 @@
+// Thin Unity adapter: reads octocap bones in Unity's frame and writes Humanoid bone transforms. All mapping,
+// retargeting and smoothing logic is in Octocap.Avatar (engine-free, tested); this file only touches Unity.
+using System;
+using Octocap;
+using Octocap.Avatar;
+using UnityEngine;
+
+[RequireComponent(typeof(Animator))]
+public sealed class OctocapAvatarDriver : MonoBehaviour
+{
+    [Range(0f, 0.95f)] public float smoothing = 0.3f;
+    public bool driveRootPosition = true;
+    public Vector3 rootOffset = Vector3.zero;
+
+    /// <summary>The session whose last frame drives the avatar (a local session fed by your detector, or one
+    /// fed from a stream). The driver only reads it.</summary>
+    public Session Session { get; set; }
+
+    readonly AvatarRetargeter _retargeter = new AvatarRetargeter();
+    readonly BonePose[] _bones = new BonePose[(int)BoneId.Count];
+    Transform[] _targets;
+
+    void Awake()
+    {
+        Library.CheckAbi();
+        var animator = GetComponent<Animator>();
+        _targets = new Transform[(int)BoneId.Count];
+        for (int b = 0; b < _targets.Length; ++b)
+        {
+            var hb = (HumanBodyBones)Enum.Parse(typeof(HumanBodyBones), BoneNames.UnityHumanBodyBones[b]);
+            _targets[b] = animator.GetBoneTransform(hb);
+        }
+    }
+
+    /// <summary>Call with the avatar standing in a T-pose (arms out, facing +Z).</summary>
+    [ContextMenu("T-pose calibrate")]
+    public void CalibrateTPose()
+    {
+        var rest = new Quat[_targets.Length];
+        var present = new bool[_targets.Length];
+        for (int b = 0; b < _targets.Length; ++b)
+        {
+            present[b] = _targets[b] != null;
+            rest[b] = present[b] ? ToOctocap(_targets[b].rotation) : QuatMath.Identity;
+        }
+        _retargeter.CalibrateTPose(rest, present);
+    }
+
+    unsafe void LateUpdate()
+    {
+        if (Session == null || !_retargeter.IsCalibrated) return;
+        try { Session.GetBones(CoordFrame.Unity, _bones); }
+        catch (OctocapException) { return; }  // nothing solved yet
+        _retargeter.Smoothing = smoothing;
+        Quat[] world = _retargeter.Update(_bones);
+        for (int b = 0; b < _targets.Length; ++b)
+            if (_targets[b] != null && _retargeter.Drives((BoneId)b)) _targets[b].rotation = ToUnity(world[b]);
+        BonePose root = _bones[(int)BoneId.Root];
+        if (driveRootPosition && root.Valid != 0 && _targets[0] != null)
+            _targets[0].position = new Vector3(root.HeadPosition[0], root.HeadPosition[1], root.HeadPosition[2]) + rootOffset;
+    }
+
+    static Quaternion ToUnity(Quat q) => new Quaternion(q.X, q.Y, q.Z, q.W);
+    static Quat ToOctocap(Quaternion q) => new Quat(q.x, q.y, q.z, q.w);
+}
