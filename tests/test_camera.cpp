@@ -85,7 +85,7 @@ TEST_CASE("undistortion inverts distortion across the image, like cv::undistortP
 }
 
 TEST_CASE("Rodrigues conversion matches cv::Rodrigues and round-trips", "[camera]") {
-  for (const Eigen::Vector3d r : {Eigen::Vector3d(0.1, -0.2, 0.3), Eigen::Vector3d(1.6882, 1.0483, -0.4196),
+  for (const Eigen::Vector3d& r : {Eigen::Vector3d(0.1, -0.2, 0.3), Eigen::Vector3d(1.6882, 1.0483, -0.4196),
                                   Eigen::Vector3d(0, 0, 3.0), Eigen::Vector3d(0, 0, 0)}) {
     cv::Mat rv = (cv::Mat_<double>(3, 1) << r.x(), r.y(), r.z()), R;
     cv::Rodrigues(rv, R);

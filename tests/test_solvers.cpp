@@ -120,7 +120,7 @@ TEST_CASE("the derived capture volume holds the filmed space", "[solve]") {
   const Eigen::AlignedBox3d v = derive_capture_volume(calib);
   REQUIRE_FALSE(v.isEmpty());
   // A person standing anywhere within 1 m of the centre, feet to head, is inside.
-  for (const Eigen::Vector3d p : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 2, 1), Eigen::Vector3d(-1, 0, -1)})
+  for (const Eigen::Vector3d& p : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 2, 1), Eigen::Vector3d(-1, 0, -1)})
     REQUIRE(v.contains(p));
   REQUIRE(v.sizes().maxCoeff() < 25.0);
 }

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "io/motion_files.h"
+#include "stream/dds_publisher.h"
 #include "solve/person_select.h"
 #include "solve/subdivision.h"
 #include "solve/triangulation.h"
@@ -50,21 +51,33 @@ Session::Session(const SessionConfig& config, Calibration calib)
   pool_ = std::make_unique<WorkerPool>(config_.threads);
   const size_t K = layout_->keypoints.size();
   filters_.assign(K, OneEuroFilter3(config_.filter_min_cutoff, config_.filter_beta));
-  keypoints_.assign(K, PointResult{});
+  frame_.keypoints.assign(K, PointResult{});
+}
+
+Session::~Session() = default;
+
+void Session::flush_stream() {
+#ifdef OCTOCAP_HAVE_DDS
+  if (publisher_) publisher_->flush();
+#endif
 }
 
 void Session::reset() {
   for (auto& f : filters_) f.reset();
   raw_previous_.clear();
   last_timestamp_us_ = 0;
-  info_ = FrameInfo{};
+  has_timestamp_ = false;
+  solved_any_ = false;
+  const int64_t last = frame_.info.frame_index;
+  frame_.info = FrameInfo{};
+  frame_.info.frame_index = last;  // numbering goes on: a stream's readers must not see a restart
   clear_frame();
 }
 
 void Session::clear_frame() {
-  keypoints_.assign(layout_->keypoints.size(), PointResult{});
-  joints_.fill(PointResult{});
-  bones_ = SkeletonPose{};
+  frame_.keypoints.assign(layout_->keypoints.size(), PointResult{});
+  frame_.joints.fill(PointResult{});
+  frame_.bones = SkeletonPose{};
 }
 
 PointResult Session::solve_keypoint(const std::vector<ViewRay>& rays) const {
@@ -107,27 +120,30 @@ void Session::solve(const std::vector<std::vector<Person2D>>& people, int64_t ti
       usable[v].push_back(people[v][p]);
       original[v].push_back(static_cast<int>(p));
     }
-  selected_ = select_people(calib_, usable, raw_previous_, {config_.min_confidence, 2 * config_.outlier_threshold_px});
+  frame_.selected = select_people(calib_, usable, raw_previous_, {config_.min_confidence, 2 * config_.outlier_threshold_px});
   uint32_t with_person = 0;
-  for (int s : selected_) with_person += s >= 0;
-  std::vector<int> selected_usable = selected_;
+  for (int s : frame_.selected) with_person += s >= 0;
+  std::vector<int> selected_usable = frame_.selected;
   for (size_t v = 0; v < V; ++v)
-    if (selected_[v] >= 0) selected_[v] = original[v][selected_[v]];  // report indices into the caller's list
+    if (frame_.selected[v] >= 0) frame_.selected[v] = original[v][frame_.selected[v]];  // report indices into the caller's list
 
-  const double dt = info_.frame_index >= 0 ? (timestamp_us - last_timestamp_us_) * 1e-6 : 0.0;
-  ++info_.frame_index;
-  info_.timestamp_us = timestamp_us;
+  const double dt = has_timestamp_ ? (timestamp_us - last_timestamp_us_) * 1e-6 : 0.0;
+  has_timestamp_ = true;
+  ++frame_.info.frame_index;
+  solved_any_ = true;
+  frame_.info.timestamp_us = timestamp_us;
   last_timestamp_us_ = timestamp_us;
-  info_.views_with_person = with_person;
-  info_.keypoints_total = static_cast<uint32_t>(K);
+  frame_.info.views_with_person = with_person;
+  frame_.info.keypoints_total = static_cast<uint32_t>(K);
   clear_frame();
 
   if (with_person < static_cast<uint32_t>(config_.min_views)) {
-    info_.keypoints_solved = 0;
-    info_.mean_reprojection_error_px = 0;
-    info_.solve_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    frame_.info.keypoints_solved = 0;
+    frame_.info.mean_reprojection_error_px = 0;
+    frame_.info.solve_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     raw_previous_.clear();
     for (auto& f : filters_) f.reset();
+    publish();
     throw Error(Errc::not_enough_views, "a person was found in " + std::to_string(with_person) +
                                             " views, at least " + std::to_string(config_.min_views) + " are needed");
   }
@@ -141,14 +157,14 @@ void Session::solve(const std::vector<std::vector<Person2D>>& people, int64_t ti
       if (!(kp.confidence >= config_.min_confidence) || !std::isfinite(kp.x) || !std::isfinite(kp.y)) continue;
       rays.push_back(make_view_ray(calib_[v], static_cast<int>(v), {kp.x, kp.y}, kp.confidence));
     }
-    keypoints_[k] = solve_keypoint(rays);
+    frame_.keypoints[k] = solve_keypoint(rays);
   });
 
   raw_previous_.assign(K, Eigen::Vector3d::Constant(std::nan("")));
   uint32_t solved = 0;
   double err = 0;
   for (size_t k = 0; k < K; ++k) {
-    PointResult& r = keypoints_[k];
+    PointResult& r = frame_.keypoints[k];
     if (!r.valid) {
       filters_[k].reset();
       continue;
@@ -158,43 +174,50 @@ void Session::solve(const std::vector<std::vector<Person2D>>& people, int64_t ti
     err += r.reprojection_error_px;
     if (config_.filter) r.position = filters_[k].filter(r.position, dt);
   }
-  info_.keypoints_solved = solved;
-  info_.mean_reprojection_error_px = solved ? err / solved : 0;
+  frame_.info.keypoints_solved = solved;
+  frame_.info.mean_reprojection_error_px = solved ? err / solved : 0;
   derive_skeleton();
-  info_.solve_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  frame_.info.solve_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  publish();
+}
+
+void Session::publish() {
+#ifdef OCTOCAP_HAVE_DDS
+  if (publisher_) publisher_->publish(frame_);
+#endif
 }
 
 void Session::derive_skeleton() {
   for (int j = 0; j < kJointCount; ++j) {
     for (const auto& alternative : layout_->joint_sources[j]) {
       bool all = true;
-      for (int k : alternative) all = all && keypoints_[k].valid;
+      for (int k : alternative) all = all && frame_.keypoints[k].valid;
       if (!all) continue;
       PointResult out;
       out.valid = true;
       out.confidence = 1e9;
       out.views_used = 1u << 31;
       for (int k : alternative) {
-        const PointResult& r = keypoints_[k];
+        const PointResult& r = frame_.keypoints[k];
         out.position += r.position / static_cast<double>(alternative.size());
         out.reprojection_error_px += r.reprojection_error_px / static_cast<double>(alternative.size());
         out.confidence = std::min(out.confidence, r.confidence);
         out.views_used = std::min(out.views_used, r.views_used);
         out.view_mask |= r.view_mask;
       }
-      joints_[j] = out;
+      frame_.joints[j] = out;
       break;
     }
   }
   SkeletonJoints rig_joints;
   for (int j = 0; j < kJointCount; ++j) {
-    if (!joints_[j].valid) {
+    if (!frame_.joints[j].valid) {
       rig_joints[j] = Eigen::Vector3d::Constant(std::nan(""));
       continue;
     }
-    rig_joints[j] = z_up_ ? zup_to_yup(joints_[j].position) : joints_[j].position;
+    rig_joints[j] = z_up_ ? zup_to_yup(frame_.joints[j].position) : frame_.joints[j].position;
   }
-  bones_ = solve_bones(rig_joints);
+  frame_.bones = solve_bones(rig_joints);
 }
 
 }  // namespace octocap

@@ -9,6 +9,8 @@
 #include "core/camera.h"
 #include "core/layout.h"
 #include "core/parallel.h"
+#include "pipeline/frame_result.h"
+#include "stream/stream_config.h"
 #include "io/openpose_json.h"
 #include "rig/bone_solver.h"
 #include "solve/observation.h"
@@ -35,33 +37,33 @@ struct SessionConfig {
   double filter_min_cutoff = 1.5;
   double filter_beta = 20.0;
   unsigned threads = 0;
+  int64_t first_frame_index = 0;  // frame numbers start here (a capture resumed mid-take keeps its numbering)
+  bool publish = false;           // stream every frame over DDS
+  StreamConfig stream;
 };
 
-struct FrameInfo {
-  int64_t frame_index = -1;
-  int64_t timestamp_us = 0;
-  uint32_t keypoints_solved = 0;
-  uint32_t keypoints_total = 0;
-  double mean_reprojection_error_px = 0;
-  uint32_t views_with_person = 0;
-  double solve_ms = 0;
-};
+class DdsPublisher;
+
 
 class Session {
  public:
   Session(const SessionConfig& config, Calibration calib);
+  ~Session();
 
   // people[view][person]; throws Error(camera_mismatch / invalid_argument / not_enough_views). After
   // not_enough_views the frame is empty (all missing) and the session stays usable.
   void solve(const std::vector<std::vector<Person2D>>& people, int64_t timestamp_us);
   void reset();
+  // Blocks until every published frame has been handed to DDS (no-op without publishing).
+  void flush_stream();
 
-  bool has_result() const { return info_.frame_index >= 0; }
-  const FrameInfo& frame_info() const { return info_; }
-  const std::vector<PointResult>& keypoints() const { return keypoints_; }
-  const std::array<PointResult, kJointCount>& joints() const { return joints_; }
-  const SkeletonPose& bones() const { return bones_; }
-  const std::vector<int>& selected_people() const { return selected_; }
+  bool has_result() const { return solved_any_; }
+  const FrameResult& result() const { return frame_; }
+  const FrameInfo& frame_info() const { return frame_.info; }
+  const std::vector<PointResult>& keypoints() const { return frame_.keypoints; }
+  const std::array<PointResult, kJointCount>& joints() const { return frame_.joints; }
+  const SkeletonPose& bones() const { return frame_.bones; }
+  const std::vector<int>& selected_people() const { return frame_.selected; }
   const SessionConfig& config() const { return config_; }
   const Calibration& calibration() const { return calib_; }
   const KeypointLayout& keypoint_layout() const { return *layout_; }
@@ -74,6 +76,7 @@ class Session {
   PointResult solve_keypoint(const std::vector<ViewRay>& rays) const;
   void derive_skeleton();
   void clear_frame();
+  void publish();
 
   SessionConfig config_;
   Calibration calib_;
@@ -83,15 +86,14 @@ class Session {
   bool z_up_ = false;
   Method method_ = Method::subdivision;
   std::unique_ptr<WorkerPool> pool_;
+  std::unique_ptr<DdsPublisher> publisher_;
 
-  std::vector<PointResult> keypoints_;
+  FrameResult frame_;
   std::vector<Eigen::Vector3d> raw_previous_;  // unfiltered, for person tracking; empty when unknown
   std::vector<OneEuroFilter3> filters_;
   int64_t last_timestamp_us_ = 0;
-  std::array<PointResult, kJointCount> joints_{};
-  SkeletonPose bones_{};
-  std::vector<int> selected_;
-  FrameInfo info_;
+  bool has_timestamp_ = false;
+  bool solved_any_ = false;
 };
 
 }  // namespace octocap

@@ -1,0 +1,92 @@
+#include "stream/dds_publisher.h"
+
+#include "core/error.h"
+#include "core/log.h"
+#include "stream/dds_entities.h"
+#include "stream/wire_convert.h"
+
+namespace octocap {
+
+struct DdsPublisher::Impl {
+  DdsParticipant participant;
+  dds_entity_t pose_writer = 0;
+  uint32_t definition_counter = 1;
+  DefinitionBuffers definition;
+  PoseBuffers pose;
+  explicit Impl(uint32_t domain) : participant(domain) {}
+};
+
+DdsPublisher::DdsPublisher(const StreamConfig& config, LayoutId layout)
+    : impl_(std::make_unique<Impl>(config.domain_id)),
+      config_(config),
+      capacity_(config.qos == StreamQos::record ? std::max<size_t>(config.history_depth, 64) : 1) {
+  const dds_entity_t p = impl_->participant.get();
+  const dds_entity_t def_topic = create_topic(p, &octocap_wire_SkeletonDefinition_desc, config.topic + "_definition");
+  const dds_entity_t pose_topic = create_topic(p, &octocap_wire_Pose_desc, config.topic + "_pose");
+  dds_qos_t* dq = definition_qos();
+  const dds_entity_t def_writer = dds_create_writer(p, def_topic, dq, nullptr);
+  dds_delete_qos(dq);
+  check_dds(def_writer, "creating the definition writer");
+  dds_qos_t* pq = pose_qos(config);
+  impl_->pose_writer = dds_create_writer(p, pose_topic, pq, nullptr);
+  dds_delete_qos(pq);
+  check_dds(impl_->pose_writer, "creating the pose writer");
+  fill_definition(layout, config.source_id, impl_->definition_counter, impl_->definition);
+  check_dds(dds_write(def_writer, &impl_->definition.sample), "writing the skeleton definition");
+  thread_ = std::thread([this] { run(); });
+}
+
+DdsPublisher::~DdsPublisher() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stop_ = true;
+  }
+  wake_.notify_all();
+  thread_.join();
+}
+
+void DdsPublisher::publish(const FrameResult& frame) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (queue_.size() >= capacity_) {
+      queue_.pop_front();
+      ++dropped_;
+    }
+    queue_.push_back(frame);
+  }
+  wake_.notify_one();
+}
+
+void DdsPublisher::flush() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  idle_.wait(lock, [&] { return queue_.empty() && !writing_; });
+}
+
+uint64_t DdsPublisher::dropped() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return dropped_;
+}
+
+void DdsPublisher::run() {
+  for (;;) {
+    FrameResult frame;
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      wake_.wait(lock, [&] { return stop_ || !queue_.empty(); });
+      if (queue_.empty()) return;  // stopping, nothing left
+      frame = std::move(queue_.front());
+      queue_.pop_front();
+      writing_ = true;
+    }
+    fill_pose(frame, config_.source_id, impl_->definition_counter, impl_->pose);
+    const dds_return_t rc = dds_write(impl_->pose_writer, &impl_->pose.sample);
+    if (rc < 0) log(LogLevel::warning, std::string("DDS: writing a pose failed: ") + dds_strretcode(rc));
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      writing_ = false;
+    }
+    idle_.notify_all();
+  }
+}
+
+}  // namespace octocap

@@ -1,0 +1,41 @@
+// Publishes solved frames without ever blocking the solve: the session hands a copy to a queue, a thread of
+// the publisher writes it. A full queue (slow network, reliable readers that stall) drops the oldest frame.
+#pragma once
+#include <condition_variable>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+#include "pipeline/frame_result.h"
+#include "stream/stream_config.h"
+
+namespace octocap {
+
+class DdsPublisher {
+ public:
+  DdsPublisher(const StreamConfig& config, LayoutId layout);
+  ~DdsPublisher();
+  DdsPublisher(const DdsPublisher&) = delete;
+  DdsPublisher& operator=(const DdsPublisher&) = delete;
+
+  void publish(const FrameResult& frame);
+  // Waits until everything queued has been written (for tests and for a clean end of a recording).
+  void flush();
+  uint64_t dropped() const;
+
+ private:
+  void run();
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  StreamConfig config_;
+  mutable std::mutex mutex_;
+  std::condition_variable wake_, idle_;
+  std::deque<FrameResult> queue_;
+  size_t capacity_;
+  bool writing_ = false, stop_ = false;
+  uint64_t dropped_ = 0;
+  std::thread thread_;
+};
+
+}  // namespace octocap

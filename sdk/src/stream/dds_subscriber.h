@@ -1,0 +1,48 @@
+// Receives skeletons published by another process (or machine) and keeps the last one as a FrameResult,
+// which the C ABI queries exactly like a local session's. Reports lost frames and publisher restarts.
+#pragma once
+#include <memory>
+
+#include "pipeline/frame_result.h"
+#include "stream/stream_config.h"
+
+namespace octocap {
+
+struct StreamStats {
+  uint64_t frames_received = 0;
+  uint64_t frames_lost = 0;     // gaps in frame numbers, summed
+  uint64_t last_gap = 0;        // frames missing right before the current one
+  uint64_t restarts = 0;        // times the frame numbers went backwards (a publisher restarted)
+  uint64_t rejected = 0;        // samples refused (other version, wrong sizes, NaN)
+  uint32_t source_id = 0;
+  uint32_t definition_counter = 0;
+  bool has_definition = false;
+};
+
+class DdsSubscriber {
+ public:
+  explicit DdsSubscriber(const StreamConfig& config);
+  ~DdsSubscriber();
+  DdsSubscriber(const DdsSubscriber&) = delete;
+  DdsSubscriber& operator=(const DdsSubscriber&) = delete;
+
+  // Takes the next pose in arrival order, waiting up to timeout_ms. False on timeout.
+  bool take_next(int timeout_ms);
+  const FrameResult& frame() const { return frame_; }
+  const StreamStats& stats() const { return stats_; }
+  LayoutId layout() const { return layout_; }
+
+ private:
+  void take_definitions();
+  bool take_one_pose();
+
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  StreamConfig config_;
+  FrameResult frame_;
+  StreamStats stats_;
+  LayoutId layout_ = LayoutId::body25;
+  int64_t last_frame_ = -1;
+};
+
+}  // namespace octocap

@@ -1,0 +1,35 @@
+// FrameResult <-> the IDL's Pose sample, and the skeleton definition sample.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "octocap_stream.h"
+#include "pipeline/frame_result.h"
+
+namespace octocap {
+
+// Owns the buffers a wire Pose points into, so a sample can be written without allocations per frame
+// once warmed up.
+struct PoseBuffers {
+  std::vector<octocap_wire_PointSample> keypoints, joints;
+  std::vector<octocap_wire_BoneSample> bones;
+  octocap_wire_Pose sample{};
+};
+
+void fill_pose(const FrameResult& frame, uint32_t source_id, uint32_t definition_counter, PoseBuffers& out);
+
+// Checks a received Pose (version, sizes, finite numbers) and turns it into a FrameResult. On failure returns
+// false with the reason in `why`.
+bool read_pose(const octocap_wire_Pose& in, LayoutId layout, FrameResult& out, std::string& why);
+
+struct Name32 {
+  char s[32];
+};
+struct DefinitionBuffers {
+  std::vector<Name32> keypoint_names, joint_names;
+  std::vector<octocap_wire_BoneDef> bones;
+  octocap_wire_SkeletonDefinition sample{};
+};
+void fill_definition(LayoutId layout, uint32_t source_id, uint32_t change_counter, DefinitionBuffers& out);
+
+}  // namespace octocap
