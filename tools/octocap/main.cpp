@@ -26,6 +26,14 @@ int main(int argc, char** argv) {
   sc->add_option("--threads", solve.threads, "Worker threads (0: all cores)")->capture_default_str();
   sc->add_option("--ground-truth", solve.ground_truth, "CSV of true 3D keypoints: report the error against it")->check(CLI::ExistingFile);
   sc->add_flag("--quiet", solve.quiet, "No progress on stderr");
+  sc->add_flag("--publish", solve.publish, "Stream every frame over DDS, paced at --rate");
+  sc->add_option("--publish-qos", solve.publish_qos, "live (best effort, newest only) or record (reliable, late joiners get history)")
+      ->check(CLI::IsMember({"live", "record"}))->capture_default_str();
+  sc->add_option("--domain", solve.domain, "DDS domain id")->check(CLI::Range(0, 232))->capture_default_str();
+  sc->add_option("--topic", solve.topic, "DDS topic base name")->capture_default_str();
+  sc->add_option("--source-id", solve.source_id, "This rig's id on the topic")->capture_default_str();
+  sc->add_option("--start-frame", solve.start_frame, "Skip the recording's first frames (numbering keeps their index)")->capture_default_str();
+  sc->add_option("--linger-s", solve.linger_s, "With --publish: stay on the network this long after the last frame")->capture_default_str();
 
   CLI::App* lc = app.add_subcommand("layouts", "List the keypoint layouts and their keypoints");
 

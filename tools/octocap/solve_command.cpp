@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include "ground_truth.h"
@@ -80,6 +81,14 @@ int solve(const SolveOptions& o) {
   cfg.sigma = o.sigma;
   cfg.delta_m = static_cast<float>(o.delta_mm / 1000.0);
   cfg.worker_threads = o.threads;
+  cfg.first_frame_index = o.start_frame;
+  if (o.publish) {
+    cfg.stream_enable = 1;
+    cfg.stream_domain_id = o.domain;
+    cfg.stream_qos = o.publish_qos == "record" ? OCTOCAP_QOS_RECORD : OCTOCAP_QOS_LIVE;
+    cfg.stream_source_id = o.source_id;
+    std::snprintf(cfg.stream_topic, sizeof cfg.stream_topic, "%s", o.topic.c_str());
+  }
   octocap_session_t* session_raw = nullptr;
   check(octocap_session_create(&cfg, calib.get(), &session_raw), "creating the session");
   SessionPtr session(session_raw);
@@ -124,7 +133,12 @@ int solve(const SolveOptions& o) {
   acc.per_keypoint_sum.assign(K, 0);
   acc.per_keypoint_n.assign(K, 0);
   const auto start = std::chrono::steady_clock::now();
-  for (uint32_t f = 0; f < frames; ++f) {
+  for (uint32_t f = o.start_frame; f < frames; ++f) {
+    if (o.publish) {
+      // Stream at the recording's own rate, as a live rig would.
+      const auto due = start + std::chrono::microseconds(static_cast<int64_t>((f - o.start_frame) * 1e6 / o.rate_hz));
+      std::this_thread::sleep_until(due);
+    }
     uint32_t needed = 0;
     octocap_result_t r = octocap_recording_read_frame(rec.get(), f, buffer.data(), static_cast<uint32_t>(buffer.size()),
                                                       &needed, people.data(), views);
@@ -168,6 +182,10 @@ int solve(const SolveOptions& o) {
       std::fprintf(stderr, "\r  frame %u / %u", f + 1, frames);
   }
   if (!o.quiet && frames >= 50) std::fprintf(stderr, "\n");
+  if (o.publish) {
+    check(octocap_session_flush_stream(session.get()), "flushing the stream");
+    std::this_thread::sleep_for(std::chrono::milliseconds(static_cast<int64_t>(o.linger_s * 1000)));
+  }
   const double total_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   check(octocap_motion_writer_close(trc.release()), "writing the TRC");

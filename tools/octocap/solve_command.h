@@ -12,6 +12,14 @@ struct SolveOptions {
   double rate_hz = 30.0;
   unsigned threads = 0;
   bool quiet = false;
+  // Streaming (DDS): publish every frame, paced at --rate.
+  bool publish = false;
+  std::string publish_qos = "live";
+  unsigned domain = 0;
+  std::string topic = "octocap";
+  unsigned source_id = 1;
+  unsigned start_frame = 0;
+  double linger_s = 0.5;
 };
 
 int run_solve(const SolveOptions& options);

@@ -261,6 +261,15 @@ enum octocap_filter_values {
   OCTOCAP_FILTER_ONE_EURO = 1  /**< Causal One Euro filter: smooth when slow, no lag when fast. */
 };
 
+/** QoS profile of a skeleton stream; publisher and subscriber must use the same one. */
+typedef int32_t octocap_stream_qos_t;
+/** Values of ::octocap_stream_qos_t. */
+enum octocap_stream_qos_t_values {
+  OCTOCAP_QOS_LIVE = 0,   /**< BEST_EFFORT, VOLATILE, KEEP_LAST 1: the newest pose, never an old one late (engines). */
+  OCTOCAP_QOS_RECORD = 1  /**< RELIABLE, TRANSIENT_LOCAL, KEEP_LAST depth: every frame; late joiners get the last
+                               `depth` poses (recorders). */
+};
+
 /** Up axis of the calibration's world frame. */
 typedef int32_t octocap_up_axis_t;
 /** Values of ::octocap_up_axis_t. */
@@ -289,6 +298,14 @@ typedef struct octocap_session_config_t {
   float filter_min_cutoff_hz;    /**< One Euro min cutoff. Default 1.5. */
   float filter_beta;             /**< One Euro speed coefficient (1/m). Default 20 (see README for the measurements). */
   uint32_t worker_threads;       /**< Threads used across joints; 0 = hardware concurrency, 1 = none. */
+  /* Added in 0.2 (a caller compiled against 0.1 passes the smaller struct_size and gets the defaults). */
+  int64_t first_frame_index;     /**< Frame numbers start here (default 0): a resumed take keeps its numbering. */
+  uint32_t stream_enable;        /**< 1: publish every solved frame over DDS (see "Streaming"). Default 0. */
+  uint32_t stream_domain_id;     /**< DDS domain. Default 0. */
+  octocap_stream_qos_t stream_qos; /**< Default ::OCTOCAP_QOS_LIVE. */
+  uint32_t stream_history_depth; /**< Poses a RECORD stream keeps for late joiners. Default 256. */
+  uint32_t stream_source_id;     /**< Identifies this rig on a shared topic (the DDS key). Default 1. */
+  char stream_topic[OCTOCAP_NAME_CAPACITY]; /**< Topic base name, "<name>_pose" and "<name>_definition". Default "octocap". */
 } octocap_session_config_t;
 
 /** Fills `cfg` with defaults and sets its struct_size. */
@@ -335,6 +352,9 @@ OCTOCAP_API octocap_result_t octocap_session_method(const octocap_session_t* ses
 
 /** The up axis in use (AUTO resolved to Y or Z at creation). */
 OCTOCAP_API octocap_result_t octocap_session_up_axis(const octocap_session_t* session, octocap_up_axis_t* out);
+
+/** Blocks until every frame this session published has been handed to DDS (no-op when not streaming). */
+OCTOCAP_API octocap_result_t octocap_session_flush_stream(octocap_session_t* session);
 
 /** Resets temporal state (filter, person tracking), e.g. between takes. */
 OCTOCAP_API octocap_result_t octocap_session_reset(octocap_session_t* session);
@@ -415,6 +435,74 @@ OCTOCAP_API octocap_result_t octocap_session_definition_counter(const octocap_se
 
 /** @} */
 /* ------------------------------------------------------------------------------------------------------ */
+/** @name Streaming: receiving skeletons over Cyclone DDS
+ *
+ * A session with `stream_enable` publishes every frame on two topics: "<topic>_definition" (the skeleton
+ * definition: layout, keypoint and joint names, bones; reliable, transient-local, so a late joiner always has
+ * it) and "<topic>_pose" (per frame). Publishing never blocks the solve: frames go to a queue that a
+ * library thread writes; when it is full the oldest frame is dropped. A subscriber, in this process or on
+ * another machine, reads the same queries as a local session. Cyclone is configured as usual through the
+ * CYCLONEDDS_URI environment variable (network interface, multicast, peers).
+ */
+/** @{ */
+
+/** Opaque stream subscriber. */
+typedef struct octocap_subscriber_t octocap_subscriber_t;
+
+/** Subscriber configuration. Fill with octocap_subscriber_config_init() first. */
+typedef struct octocap_subscriber_config_t {
+  uint32_t struct_size;          /**< sizeof(octocap_subscriber_config_t). */
+  uint32_t domain_id;            /**< DDS domain. Default 0. */
+  octocap_stream_qos_t qos;      /**< Must match the publisher's. Default ::OCTOCAP_QOS_LIVE. */
+  uint32_t history_depth;        /**< RECORD: poses kept for this reader. Default 256. */
+  uint32_t source_id;            /**< Only this source; 0 = any. Default 0. */
+  char topic[OCTOCAP_NAME_CAPACITY]; /**< Default "octocap". */
+} octocap_subscriber_config_t;
+
+/** Counters of a subscription. */
+typedef struct octocap_stream_info_t {
+  uint64_t frames_received;      /**< Poses taken. */
+  uint64_t frames_lost;          /**< Frame numbers skipped, summed over the stream. */
+  uint64_t last_gap;             /**< Frames missing right before the current one (0 = none). */
+  uint64_t restarts;             /**< Times the frame numbers went backwards: the publisher restarted. */
+  uint64_t rejected;             /**< Samples refused (other wire version, wrong sizes, NaN); each is logged. */
+  uint32_t source_id;            /**< Source of the current frame. */
+  uint32_t definition_counter;   /**< Change counter of the skeleton definition received. */
+  octocap_layout_t layout;       /**< Keypoint layout of the stream. */
+  uint32_t has_definition;       /**< 1 once the skeleton definition has arrived. */
+} octocap_stream_info_t;
+
+/** Fills `cfg` with defaults and sets its struct_size. */
+OCTOCAP_API void octocap_subscriber_config_init(octocap_subscriber_config_t* cfg);
+/** Joins a stream. */
+OCTOCAP_API octocap_result_t octocap_subscriber_create(const octocap_subscriber_config_t* cfg,
+                                                       octocap_subscriber_t** out);
+/** Leaves the stream; NULL is accepted. */
+OCTOCAP_API void octocap_subscriber_destroy(octocap_subscriber_t* sub);
+/**
+ * Takes the next pose in arrival order, waiting up to `timeout_ms` (0: do not wait), and makes it the current
+ * frame for the queries below. ::OCTOCAP_ERROR_NO_RESULT when none arrived in time (the previous frame stays).
+ */
+OCTOCAP_API octocap_result_t octocap_subscriber_take(octocap_subscriber_t* sub, int32_t timeout_ms);
+/** Counters: frames received and lost, publisher restarts, rejected samples. */
+OCTOCAP_API octocap_result_t octocap_subscriber_get_stream_info(const octocap_subscriber_t* sub,
+                                                                octocap_stream_info_t* out);
+/** As octocap_session_get_frame_info(), for the current received frame (solve_ms is 0). */
+OCTOCAP_API octocap_result_t octocap_subscriber_get_frame_info(const octocap_subscriber_t* sub,
+                                                               octocap_frame_info_t* out);
+/** As octocap_session_get_keypoints3d(), for the current received frame. */
+OCTOCAP_API octocap_result_t octocap_subscriber_get_keypoints3d(const octocap_subscriber_t* sub, octocap_joint_t* out,
+                                                                uint32_t capacity, uint32_t* count);
+/** As octocap_session_get_joints(), for the current received frame. */
+OCTOCAP_API octocap_result_t octocap_subscriber_get_joints(const octocap_subscriber_t* sub, octocap_joint_t* out,
+                                                           uint32_t capacity, uint32_t* count);
+/** As octocap_session_get_bones(), for the current received frame. */
+OCTOCAP_API octocap_result_t octocap_subscriber_get_bones(const octocap_subscriber_t* sub, octocap_coord_frame_t frame,
+                                                          octocap_bone_pose_t* out, uint32_t capacity,
+                                                          uint32_t* count);
+
+/** @} */
+/* ------------------------------------------------------------------------------------------------------ */
 /** @name Recordings on disk: OpenPose JSON folders (Pose2Sim layout) */
 /** @{ */
 
@@ -475,6 +563,9 @@ OCTOCAP_API octocap_result_t octocap_motion_writer_create(const char* path, octo
 /** Appends the last frame's layout keypoints of `session`. */
 OCTOCAP_API octocap_result_t octocap_motion_writer_add_frame(octocap_motion_writer_t* writer,
                                                              const octocap_session_t* session);
+/** Appends `count` 3D keypoints (layout order, e.g. from octocap_subscriber_get_keypoints3d()). */
+OCTOCAP_API octocap_result_t octocap_motion_writer_add_keypoints(octocap_motion_writer_t* writer,
+                                                                 const octocap_joint_t* keypoints, uint32_t count);
 /** Appends an empty frame (nothing solved). */
 OCTOCAP_API octocap_result_t octocap_motion_writer_add_empty_frame(octocap_motion_writer_t* writer);
 /** Writes the file and destroys the writer (also on failure). NULL is accepted. */

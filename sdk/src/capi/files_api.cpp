@@ -127,6 +127,24 @@ octocap_result_t octocap_motion_writer_add_frame(octocap_motion_writer_t* w, con
   });
 }
 
+octocap_result_t octocap_motion_writer_add_keypoints(octocap_motion_writer_t* w, const octocap_joint_t* keypoints,
+                                                     uint32_t count) {
+  return capi::guard([&] {
+    capi::checked(w, "motion writer");
+    capi::require(keypoints, "keypoints");
+    if (count != w->track.markers.size())
+      throw Error(Errc::invalid_argument, "got " + std::to_string(count) + " keypoints, the writer's layout has " +
+                                              std::to_string(w->track.markers.size()));
+    MarkerFrame f;
+    for (uint32_t k = 0; k < count; ++k) {
+      const octocap_joint_t& j = keypoints[k];
+      const Eigen::Vector3d p(j.position[0], j.position[1], j.position[2]);
+      f.push_back(j.valid && p.allFinite() ? p : Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));
+    }
+    w->track.frames.push_back(std::move(f));
+  });
+}
+
 octocap_result_t octocap_motion_writer_add_empty_frame(octocap_motion_writer_t* w) {
   return capi::guard([&] {
     capi::checked(w, "motion writer");

@@ -1,21 +1,30 @@
 // Session handles: config, create/destroy, solve, per-frame queries.
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 
 #include "capi/boundary.h"
 #include "capi/handles.h"
-#include "rig/engine_frames.h"
+#include "capi/frame_queries.h"
+#include "capi/stream_c.h"
 
 using namespace octocap;
 
 namespace {
 
-SessionConfig from_c(const octocap_session_config_t& c) {
-  if (c.struct_size != sizeof(octocap_session_config_t))
-    throw Error(Errc::struct_size, "octocap_session_config_t.struct_size is " + std::to_string(c.struct_size) +
-                                       ", this library expects " + std::to_string(sizeof(octocap_session_config_t)) +
+// The 0.1 struct ended at worker_threads; callers built against it pass that size and get defaults for the rest.
+constexpr size_t kConfigV1Size = offsetof(octocap_session_config_t, first_frame_index);
+
+SessionConfig from_c(const octocap_session_config_t& given) {
+  if (given.struct_size < kConfigV1Size || given.struct_size > sizeof(octocap_session_config_t))
+    throw Error(Errc::struct_size, "octocap_session_config_t.struct_size is " + std::to_string(given.struct_size) +
+                                       ", this library accepts " + std::to_string(kConfigV1Size) + " to " +
+                                       std::to_string(sizeof(octocap_session_config_t)) +
                                        " (call octocap_session_config_init first)");
+  octocap_session_config_t c;
+  octocap_session_config_init(&c);
+  std::memcpy(&c, &given, given.struct_size);
   SessionConfig s;
   if (octocap_layout_keypoint_count(c.layout) == 0)
     throw Error(Errc::invalid_argument, "config.layout must be a concrete layout (not AUTO)");
@@ -57,6 +66,10 @@ SessionConfig from_c(const octocap_session_config_t& c) {
   s.filter_min_cutoff = c.filter_min_cutoff_hz;
   s.filter_beta = c.filter_beta;
   s.threads = std::min<uint32_t>(c.worker_threads, 256);
+  s.first_frame_index = c.first_frame_index;
+  s.publish = c.stream_enable != 0;
+  if (s.publish) s.stream = capi::stream_config(c.stream_domain_id, c.stream_qos, c.stream_history_depth,
+                                                c.stream_source_id, c.stream_topic, sizeof c.stream_topic);
   return s;
 }
 
@@ -64,37 +77,6 @@ const Session& result_of(const octocap_session_t* s) {
   capi::checked(s, "session");
   if (!s->session->has_result()) throw Error(Errc::no_result, "no frame has been solved yet");
   return *s->session;
-}
-
-void to_c(const PointResult& r, octocap_joint_t& out) {
-  out = octocap_joint_t{};
-  if (!r.valid) return;
-  for (int k = 0; k < 3; ++k) out.position[k] = static_cast<float>(r.position[k]);
-  out.confidence = static_cast<float>(r.confidence);
-  out.reprojection_error_px = static_cast<float>(r.reprojection_error_px);
-  out.views_used = r.views_used;
-  out.valid = 1;
-}
-
-// Two-call pattern: out == NULL asks for the count; a short buffer is an error that still reports it.
-template <class Fill>
-void fill_array(uint32_t needed, void* out, uint32_t capacity, uint32_t* count, Fill&& fill) {
-  capi::require(count, "count");
-  *count = needed;
-  if (!out) return;
-  if (capacity < needed)
-    throw Error(Errc::buffer_too_small, "capacity " + std::to_string(capacity) + " < " + std::to_string(needed));
-  fill();
-}
-
-CoordFrame frame_of(octocap_coord_frame_t f) {
-  if (f != OCTOCAP_FRAME_RIG && f != OCTOCAP_FRAME_UNITY && f != OCTOCAP_FRAME_GODOT)
-    throw Error(Errc::invalid_argument, "unknown coordinate frame");
-  return static_cast<CoordFrame>(f);
-}
-
-octocap_quat_t quat_c(const Eigen::Quaterniond& q) {
-  return {static_cast<float>(q.x()), static_cast<float>(q.y()), static_cast<float>(q.z()), static_cast<float>(q.w())};
 }
 
 }  // namespace
@@ -119,6 +101,13 @@ void octocap_session_config_init(octocap_session_config_t* c) {
   c->filter_min_cutoff_hz = 1.5f;
   c->filter_beta = 20.0f;
   c->worker_threads = 0;
+  c->first_frame_index = 0;
+  c->stream_enable = 0;
+  c->stream_domain_id = 0;
+  c->stream_qos = OCTOCAP_QOS_LIVE;
+  c->stream_history_depth = 256;
+  c->stream_source_id = 1;
+  capi::copy_name(c->stream_topic, sizeof c->stream_topic, "octocap");
 }
 
 octocap_result_t octocap_session_create(const octocap_session_config_t* cfg, const octocap_calibration_t* calib,
@@ -190,87 +179,55 @@ octocap_result_t octocap_session_up_axis(const octocap_session_t* s, octocap_up_
   });
 }
 
+octocap_result_t octocap_session_flush_stream(octocap_session_t* s) {
+  return capi::guard([&] { capi::checked(s, "session")->session->flush_stream(); });
+}
+
 octocap_result_t octocap_session_reset(octocap_session_t* s) {
   return capi::guard([&] { capi::checked(s, "session")->session->reset(); });
 }
 
 octocap_result_t octocap_session_get_frame_info(const octocap_session_t* s, octocap_frame_info_t* out) {
-  return capi::guard([&] {
-    const Session& session = result_of(s);
-    capi::require(out, "out");
-    const FrameInfo& f = session.frame_info();
-    *out = octocap_frame_info_t{};
-    out->frame_index = f.frame_index;
-    out->timestamp_us = f.timestamp_us;
-    out->keypoints_solved = f.keypoints_solved;
-    out->keypoints_total = f.keypoints_total;
-    out->mean_reprojection_error_px = static_cast<float>(f.mean_reprojection_error_px);
-    out->views_with_person = f.views_with_person;
-    out->solve_ms = static_cast<float>(f.solve_ms);
-  });
+  return capi::guard([&] { capi::query_frame_info(result_of(s).result(), out); });
 }
 
 octocap_result_t octocap_session_get_keypoints3d(const octocap_session_t* s, octocap_joint_t* out,
                                                  uint32_t capacity, uint32_t* count) {
-  return capi::guard([&] {
-    const Session& session = result_of(s);
-    const auto& kps = session.keypoints();
-    fill_array(static_cast<uint32_t>(kps.size()), out, capacity, count, [&] {
-      for (size_t k = 0; k < kps.size(); ++k) to_c(kps[k], out[k]);
-    });
-  });
+  return capi::guard([&] { capi::query_keypoints(result_of(s).result(), out, capacity, count); });
 }
 
 octocap_result_t octocap_session_get_joints(const octocap_session_t* s, octocap_joint_t* out, uint32_t capacity,
                                             uint32_t* count) {
-  return capi::guard([&] {
-    const Session& session = result_of(s);
-    fill_array(kJointCount, out, capacity, count, [&] {
-      for (int j = 0; j < kJointCount; ++j) to_c(session.joints()[j], out[j]);
-    });
-  });
+  return capi::guard([&] { capi::query_joints(result_of(s).result(), out, capacity, count); });
 }
 
 octocap_result_t octocap_session_get_selected_people(const octocap_session_t* s, int32_t* out, uint32_t capacity,
                                                      uint32_t* count) {
   return capi::guard([&] {
-    const Session& session = result_of(s);
-    const auto& sel = session.selected_people();
-    fill_array(static_cast<uint32_t>(sel.size()), out, capacity, count, [&] {
-      for (size_t v = 0; v < sel.size(); ++v) out[v] = sel[v];
-    });
+    const auto& sel = result_of(s).selected_people();
+    capi::require(count, "count");
+    *count = static_cast<uint32_t>(sel.size());
+    if (!out) return;
+    if (capacity < sel.size()) throw Error(Errc::buffer_too_small, "capacity is below the view count");
+    for (size_t v = 0; v < sel.size(); ++v) out[v] = sel[v];
   });
 }
 
 octocap_result_t octocap_session_get_bones(const octocap_session_t* s, octocap_coord_frame_t frame,
                                            octocap_bone_pose_t* out, uint32_t capacity, uint32_t* count) {
-  return capi::guard([&] {
-    const Session& session = result_of(s);
-    const CoordFrame cf = frame_of(frame);
-    fill_array(kBoneCount, out, capacity, count, [&] {
-      for (int b = 0; b < kBoneCount; ++b) {
-        const BonePose& p = session.bones()[b];
-        octocap_bone_pose_t& o = out[b];
-        o = octocap_bone_pose_t{};
-        o.local_rotation = quat_c(convert_rotation(p.local, cf));
-        o.global_rotation = quat_c(convert_rotation(p.global, cf));
-        const Eigen::Vector3d h = convert_position(p.head, cf);
-        for (int k = 0; k < 3; ++k) o.head_position[k] = static_cast<float>(h[k]);
-        o.length_m = static_cast<float>(p.length);
-        o.valid = p.valid ? 1 : 0;
-      }
-    });
-  });
+  return capi::guard([&] { capi::query_bones(result_of(s).result(), frame, out, capacity, count); });
 }
 
 octocap_result_t octocap_session_get_bone_rotation(const octocap_session_t* s, uint32_t bone,
                                                    octocap_coord_frame_t frame, octocap_quat_t* out) {
   return capi::guard([&] {
-    const Session& session = result_of(s);
     capi::require(out, "out");
     if (bone >= static_cast<uint32_t>(kBoneCount))
       throw Error(Errc::invalid_argument, "bone index " + std::to_string(bone) + " out of range");
-    *out = quat_c(convert_rotation(session.bones()[bone].local, frame_of(frame)));
+    octocap_bone_pose_t bones[kBoneCount];
+    uint32_t n = 0;
+    capi::query_bones(result_of(s).result(), frame, bones, kBoneCount, &n);
+    *out = bones[bone].local_rotation;
   });
 }
 

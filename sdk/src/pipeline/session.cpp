@@ -52,6 +52,15 @@ Session::Session(const SessionConfig& config, Calibration calib)
   const size_t K = layout_->keypoints.size();
   filters_.assign(K, OneEuroFilter3(config_.filter_min_cutoff, config_.filter_beta));
   frame_.keypoints.assign(K, PointResult{});
+  frame_.layout = config_.layout;
+  frame_.info.frame_index = config_.first_frame_index - 1;
+  if (config_.publish) {
+#ifdef OCTOCAP_HAVE_DDS
+    publisher_ = std::make_unique<DdsPublisher>(config_.stream, config_.layout);
+#else
+    throw Error(Errc::unsupported, "this build of octocap has no DDS streaming (OCTOCAP_WITH_DDS=OFF)");
+#endif
+  }
 }
 
 Session::~Session() = default;

@@ -1,0 +1,84 @@
+#include "capi/frame_queries.h"
+
+#include "capi/boundary.h"
+#include "rig/engine_frames.h"
+
+namespace octocap::capi {
+namespace {
+
+// Two-call pattern: out == NULL asks for the count; a short buffer is an error that still reports it.
+template <class Fill>
+void fill_array(uint32_t needed, const void* out, uint32_t capacity, uint32_t* count, Fill&& fill) {
+  require(count, "count");
+  *count = needed;
+  if (!out) return;
+  if (capacity < needed)
+    throw Error(Errc::buffer_too_small, "capacity " + std::to_string(capacity) + " < " + std::to_string(needed));
+  fill();
+}
+
+CoordFrame frame_of(octocap_coord_frame_t f) {
+  if (f != OCTOCAP_FRAME_RIG && f != OCTOCAP_FRAME_UNITY && f != OCTOCAP_FRAME_GODOT)
+    throw Error(Errc::invalid_argument, "unknown coordinate frame " + std::to_string(f));
+  return static_cast<CoordFrame>(f);
+}
+
+octocap_quat_t quat_c(const Eigen::Quaterniond& q) {
+  return {static_cast<float>(q.x()), static_cast<float>(q.y()), static_cast<float>(q.z()), static_cast<float>(q.w())};
+}
+
+}  // namespace
+
+void to_c_joint(const PointResult& r, octocap_joint_t& out) {
+  out = octocap_joint_t{};
+  if (!r.valid) return;
+  for (int k = 0; k < 3; ++k) out.position[k] = static_cast<float>(r.position[k]);
+  out.confidence = static_cast<float>(r.confidence);
+  out.reprojection_error_px = static_cast<float>(r.reprojection_error_px);
+  out.views_used = r.views_used;
+  out.valid = 1;
+}
+
+void query_frame_info(const FrameResult& f, octocap_frame_info_t* out) {
+  require(out, "out");
+  *out = octocap_frame_info_t{};
+  out->frame_index = f.info.frame_index;
+  out->timestamp_us = f.info.timestamp_us;
+  out->keypoints_solved = f.info.keypoints_solved;
+  out->keypoints_total = f.info.keypoints_total;
+  out->mean_reprojection_error_px = static_cast<float>(f.info.mean_reprojection_error_px);
+  out->views_with_person = f.info.views_with_person;
+  out->solve_ms = static_cast<float>(f.info.solve_ms);
+}
+
+void query_keypoints(const FrameResult& f, octocap_joint_t* out, uint32_t capacity, uint32_t* count) {
+  fill_array(static_cast<uint32_t>(f.keypoints.size()), out, capacity, count, [&] {
+    for (size_t k = 0; k < f.keypoints.size(); ++k) to_c_joint(f.keypoints[k], out[k]);
+  });
+}
+
+void query_joints(const FrameResult& f, octocap_joint_t* out, uint32_t capacity, uint32_t* count) {
+  fill_array(kJointCount, out, capacity, count, [&] {
+    for (int j = 0; j < kJointCount; ++j) to_c_joint(f.joints[j], out[j]);
+  });
+}
+
+void query_bones(const FrameResult& f, octocap_coord_frame_t frame, octocap_bone_pose_t* out, uint32_t capacity,
+                 uint32_t* count) {
+  const CoordFrame cf = frame_of(frame);
+  fill_array(kBoneCount, out, capacity, count, [&] {
+    for (int b = 0; b < kBoneCount; ++b) {
+      const BonePose& p = f.bones[b];
+      octocap_bone_pose_t& o = out[b];
+      o = octocap_bone_pose_t{};
+      o.local_rotation = quat_c(convert_rotation(p.local, cf));
+      o.global_rotation = quat_c(convert_rotation(p.global, cf));
+      const Eigen::Vector3d h = convert_position(p.head, cf);
+      for (int k = 0; k < 3; ++k) o.head_position[k] = static_cast<float>(h[k]);
+      o.length_m = static_cast<float>(p.length);
+      o.valid = p.valid ? 1 : 0;
+    }
+  });
+}
+
+}  // namespace octocap::capi
