@@ -132,6 +132,16 @@ int solve(const SolveOptions& o) {
   Accuracy acc;
   acc.per_keypoint_sum.assign(K, 0);
   acc.per_keypoint_n.assign(K, 0);
+  if (o.publish && o.wait_subscribers > 0) {
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    uint32_t readers = 0;
+    while (check(octocap_session_stream_subscribers(session.get(), &readers), "stream subscribers"),
+           readers < o.wait_subscribers && std::chrono::steady_clock::now() < give_up)
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    if (readers < o.wait_subscribers)
+      std::fprintf(stderr, "octocap solve: only %u of %u subscribers after 10 s; streaming anyway\n", readers,
+                   o.wait_subscribers);
+  }
   const auto start = std::chrono::steady_clock::now();
   for (uint32_t f = o.start_frame; f < frames; ++f) {
     if (o.publish) {

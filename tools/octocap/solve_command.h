@@ -20,6 +20,7 @@ struct SolveOptions {
   unsigned source_id = 1;
   unsigned start_frame = 0;
   double linger_s = 0.5;
+  unsigned wait_subscribers = 0;
 };
 
 int run_solve(const SolveOptions& options);

@@ -353,6 +353,10 @@ OCTOCAP_API octocap_result_t octocap_session_method(const octocap_session_t* ses
 /** The up axis in use (AUTO resolved to Y or Z at creation). */
 OCTOCAP_API octocap_result_t octocap_session_up_axis(const octocap_session_t* session, octocap_up_axis_t* out);
 
+/** Number of subscribers currently matched to this session's pose stream (0 when not streaming): lets a
+ *  recording wait for its recorder before the take starts. */
+OCTOCAP_API octocap_result_t octocap_session_stream_subscribers(const octocap_session_t* session, uint32_t* out);
+
 /** Blocks until every frame this session published has been handed to DDS (no-op when not streaming). */
 OCTOCAP_API octocap_result_t octocap_session_flush_stream(octocap_session_t* session);
 

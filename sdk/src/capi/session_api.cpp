@@ -179,6 +179,14 @@ octocap_result_t octocap_session_up_axis(const octocap_session_t* s, octocap_up_
   });
 }
 
+octocap_result_t octocap_session_stream_subscribers(const octocap_session_t* s, uint32_t* out) {
+  return capi::guard([&] {
+    capi::checked(s, "session");
+    capi::require(out, "out");
+    *out = s->session->stream_readers();
+  });
+}
+
 octocap_result_t octocap_session_flush_stream(octocap_session_t* s) {
   return capi::guard([&] { capi::checked(s, "session")->session->flush_stream(); });
 }

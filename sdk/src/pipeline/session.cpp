@@ -71,6 +71,13 @@ void Session::flush_stream() {
 #endif
 }
 
+uint32_t Session::stream_readers() const {
+#ifdef OCTOCAP_HAVE_DDS
+  if (publisher_) return publisher_->matched_readers();
+#endif
+  return 0;
+}
+
 void Session::reset() {
   for (auto& f : filters_) f.reset();
   raw_previous_.clear();

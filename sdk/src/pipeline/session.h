@@ -56,6 +56,8 @@ class Session {
   void reset();
   // Blocks until every published frame has been handed to DDS (no-op without publishing).
   void flush_stream();
+  // Matched readers of this session's pose stream (0 when not streaming).
+  uint32_t stream_readers() const;
 
   bool has_result() const { return solved_any_; }
   const FrameResult& result() const { return frame_; }

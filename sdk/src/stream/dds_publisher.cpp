@@ -67,6 +67,12 @@ uint64_t DdsPublisher::dropped() const {
   return dropped_;
 }
 
+uint32_t DdsPublisher::matched_readers() const {
+  dds_publication_matched_status_t st{};
+  if (dds_get_publication_matched_status(impl_->pose_writer, &st) < 0) return 0;
+  return st.current_count;
+}
+
 void DdsPublisher::run() {
   for (;;) {
     FrameResult frame;

@@ -23,6 +23,8 @@ class DdsPublisher {
   // Waits until everything queued has been written (for tests and for a clean end of a recording).
   void flush();
   uint64_t dropped() const;
+  // Readers of the pose topic currently matched (so a recorder can be waited for before a take starts).
+  uint32_t matched_readers() const;
 
  private:
   void run();
