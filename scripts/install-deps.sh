@@ -20,5 +20,6 @@ $SUDO apt-get install -y -q --no-install-recommends \
   libtomlplusplus-dev nlohmann-json3-dev libcli11-dev \
   libopencv-core-dev libopencv-calib3d-dev \
   assimp-testmodels python3 python3-pip \
-  mono-devel nunit-console libnunit-cil-dev
+  mono-devel nunit-console libnunit-cil-dev \
+  cyclonedds-dev cyclonedds-tools liblo-dev
 $SUDO apt-get install -y -q --no-install-recommends -t bookworm-backports libcatch2-dev

@@ -24,4 +24,11 @@ namespace Octocap
         public override bool IsInvalid => handle == IntPtr.Zero;
         protected override bool ReleaseHandle() { NativeMethods.octocap_recording_destroy(handle); return true; }
     }
+
+    public sealed class SubscriberHandle : SafeHandle
+    {
+        public SubscriberHandle() : base(IntPtr.Zero, true) { }
+        public override bool IsInvalid => handle == IntPtr.Zero;
+        protected override bool ReleaseHandle() { NativeMethods.octocap_subscriber_destroy(handle); return true; }
+    }
 }

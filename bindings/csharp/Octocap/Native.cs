@@ -18,6 +18,7 @@ namespace Octocap
     public enum Filter : int { None = 0, OneEuro = 1 }
     public enum UpAxis : int { Y = 0, Z = 1, Auto = 2 }
     public enum CoordFrame : int { Rig = 0, Unity = 1, Godot = 2 }
+    public enum StreamQos : int { Live = 0, Record = 1 }
 
     /// <summary>The paper's skeleton joints (octocap_joint_id_t).</summary>
     public enum JointId : int
@@ -123,6 +124,13 @@ namespace Octocap
         public float FilterMinCutoffHz;
         public float FilterBeta;
         public uint WorkerThreads;
+        public long FirstFrameIndex;
+        public uint StreamEnable;
+        public uint StreamDomainId;
+        public StreamQos StreamQos;
+        public uint StreamHistoryDepth;
+        public uint StreamSourceId;
+        public fixed byte StreamTopic[32];
 
         /// <summary>The library's defaults (octocap_session_config_init), struct_size set.</summary>
         public static SessionConfig Default
@@ -134,6 +142,42 @@ namespace Octocap
                 return c;
             }
         }
+    }
+
+    /// <summary>octocap_subscriber_config_t. Start from <see cref="SubscriberConfig.Default"/>.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public unsafe struct SubscriberConfig
+    {
+        public uint StructSize;
+        public uint DomainId;
+        public StreamQos Qos;
+        public uint HistoryDepth;
+        public uint SourceId;
+        public fixed byte Topic[32];
+
+        public static SubscriberConfig Default
+        {
+            get
+            {
+                SubscriberConfig c;
+                NativeMethods.octocap_subscriber_config_init(out c);
+                return c;
+            }
+        }
+    }
+
+    [StructLayout(LayoutKind.Sequential)]
+    public struct StreamInfo
+    {
+        public ulong FramesReceived;
+        public ulong FramesLost;
+        public ulong LastGap;
+        public ulong Restarts;
+        public ulong Rejected;
+        public uint SourceId;
+        public uint DefinitionCounter;
+        public Layout Layout;
+        public uint HasDefinition;
     }
 
     [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
@@ -165,6 +209,8 @@ namespace Octocap
         [DllImport(Lib)] internal static extern void octocap_session_destroy(IntPtr session);
         [DllImport(Lib)] internal static extern Result octocap_session_solve_keypoints(SessionHandle s, Keypoint2D* keypoints, uint* peoplePerView, uint viewCount, long timestampUs);
         [DllImport(Lib)] internal static extern Result octocap_session_reset(SessionHandle s);
+        [DllImport(Lib)] internal static extern Result octocap_session_flush_stream(SessionHandle s);
+        [DllImport(Lib)] internal static extern Result octocap_session_stream_subscribers(SessionHandle s, out uint count);
         [DllImport(Lib)] internal static extern Result octocap_session_method(SessionHandle s, out Method method);
         [DllImport(Lib)] internal static extern Result octocap_session_up_axis(SessionHandle s, out UpAxis up);
         [DllImport(Lib)] internal static extern Result octocap_session_get_frame_info(SessionHandle s, out FrameInfo info);
@@ -180,6 +226,16 @@ namespace Octocap
         [DllImport(Lib)] internal static extern Result octocap_recording_frame_count(RecordingHandle rec, out uint count);
         [DllImport(Lib)] internal static extern Result octocap_recording_layout(RecordingHandle rec, out Layout layout);
         [DllImport(Lib)] internal static extern Result octocap_recording_read_frame(RecordingHandle rec, uint frame, Keypoint2D* keypoints, uint capacity, out uint keypointCount, uint* peoplePerView, uint viewCount);
+
+        [DllImport(Lib)] internal static extern void octocap_subscriber_config_init(out SubscriberConfig cfg);
+        [DllImport(Lib)] internal static extern Result octocap_subscriber_create(ref SubscriberConfig cfg, out SubscriberHandle sub);
+        [DllImport(Lib)] internal static extern void octocap_subscriber_destroy(IntPtr sub);
+        [DllImport(Lib)] internal static extern Result octocap_subscriber_take(SubscriberHandle sub, int timeoutMs);
+        [DllImport(Lib)] internal static extern Result octocap_subscriber_get_stream_info(SubscriberHandle sub, out StreamInfo info);
+        [DllImport(Lib)] internal static extern Result octocap_subscriber_get_frame_info(SubscriberHandle sub, out FrameInfo info);
+        [DllImport(Lib)] internal static extern Result octocap_subscriber_get_keypoints3d(SubscriberHandle sub, Joint* joints, uint capacity, out uint count);
+        [DllImport(Lib)] internal static extern Result octocap_subscriber_get_joints(SubscriberHandle sub, Joint* joints, uint capacity, out uint count);
+        [DllImport(Lib)] internal static extern Result octocap_subscriber_get_bones(SubscriberHandle sub, CoordFrame frame, BonePose* bones, uint capacity, out uint count);
 
         internal static string Utf8(IntPtr p) => p == IntPtr.Zero ? null : Marshal.PtrToStringAnsi(p);
     }

@@ -43,6 +43,15 @@ namespace Octocap
 
         public void Reset() => OctocapException.Check(NativeMethods.octocap_session_reset(Handle));
 
+        /// <summary>Blocks until every published frame has been handed to DDS.</summary>
+        public void FlushStream() => OctocapException.Check(NativeMethods.octocap_session_flush_stream(Handle));
+
+        /// <summary>Subscribers matched to this session's stream.</summary>
+        public int StreamSubscribers
+        {
+            get { uint n; OctocapException.Check(NativeMethods.octocap_session_stream_subscribers(Handle, out n)); return (int)n; }
+        }
+
         public Method Method
         {
             get { Method m; OctocapException.Check(NativeMethods.octocap_session_method(Handle, out m)); return m; }

@@ -43,7 +43,20 @@ static void layout(void) {
   FIELD(octocap_session_config_t, min_confidence); FIELD(octocap_session_config_t, outlier_threshold_px);
   FIELD(octocap_session_config_t, volume_min); FIELD(octocap_session_config_t, volume_max);
   FIELD(octocap_session_config_t, filter_min_cutoff_hz); FIELD(octocap_session_config_t, filter_beta);
-  FIELD(octocap_session_config_t, worker_threads);
+  FIELD(octocap_session_config_t, worker_threads); FIELD(octocap_session_config_t, first_frame_index);
+  FIELD(octocap_session_config_t, stream_enable); FIELD(octocap_session_config_t, stream_domain_id);
+  FIELD(octocap_session_config_t, stream_qos); FIELD(octocap_session_config_t, stream_history_depth);
+  FIELD(octocap_session_config_t, stream_source_id); FIELD(octocap_session_config_t, stream_topic);
+  SIZE(octocap_subscriber_config_t);
+  FIELD(octocap_subscriber_config_t, struct_size); FIELD(octocap_subscriber_config_t, domain_id);
+  FIELD(octocap_subscriber_config_t, qos); FIELD(octocap_subscriber_config_t, history_depth);
+  FIELD(octocap_subscriber_config_t, source_id); FIELD(octocap_subscriber_config_t, topic);
+  SIZE(octocap_stream_info_t);
+  FIELD(octocap_stream_info_t, frames_received); FIELD(octocap_stream_info_t, frames_lost);
+  FIELD(octocap_stream_info_t, last_gap); FIELD(octocap_stream_info_t, restarts);
+  FIELD(octocap_stream_info_t, rejected); FIELD(octocap_stream_info_t, source_id);
+  FIELD(octocap_stream_info_t, definition_counter); FIELD(octocap_stream_info_t, layout);
+  FIELD(octocap_stream_info_t, has_definition);
 }
 
 static int fail(const char* what) {

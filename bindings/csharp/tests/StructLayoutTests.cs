@@ -16,6 +16,7 @@ namespace Octocap.Tests
             { "octocap_quat_t", typeof(Quat) }, { "octocap_bone_pose_t", typeof(BonePose) },
             { "octocap_frame_info_t", typeof(FrameInfo) }, { "octocap_bone_info_t", typeof(BoneInfo) },
             { "octocap_camera_t", typeof(CameraData) }, { "octocap_session_config_t", typeof(SessionConfig) },
+            { "octocap_subscriber_config_t", typeof(SubscriberConfig) }, { "octocap_stream_info_t", typeof(StreamInfo) },
         };
 
         static string Pascal(string snake)
