@@ -34,6 +34,9 @@ int main(int argc, char** argv) {
   sc->add_option("--source-id", solve.source_id, "This rig's id on the topic")->capture_default_str();
   sc->add_option("--start-frame", solve.start_frame, "Skip the recording's first frames (numbering keeps their index)")->capture_default_str();
   sc->add_option("--wait-subscribers", solve.wait_subscribers, "With --publish: wait (up to 10 s) for this many subscribers before the first frame")->capture_default_str();
+  sc->add_option("--vmc-port", solve.vmc_port, "Also send VMC protocol (OSC/UDP) to this port (VMC's usual: 39539); paced at --rate")
+      ->check(CLI::Range(0, 65535));
+  sc->add_option("--vmc-host", solve.vmc_host, "VMC receiver host")->capture_default_str();
   sc->add_option("--linger-s", solve.linger_s, "With --publish: stay on the network this long after the last frame")->capture_default_str();
 
   CLI::App* lc = app.add_subcommand("layouts", "List the keypoint layouts and their keypoints");

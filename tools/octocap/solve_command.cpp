@@ -82,6 +82,8 @@ int solve(const SolveOptions& o) {
   cfg.delta_m = static_cast<float>(o.delta_mm / 1000.0);
   cfg.worker_threads = o.threads;
   cfg.first_frame_index = o.start_frame;
+  cfg.vmc_port = o.vmc_port;
+  std::snprintf(cfg.vmc_host, sizeof cfg.vmc_host, "%s", o.vmc_host.c_str());
   if (o.publish) {
     cfg.stream_enable = 1;
     cfg.stream_domain_id = o.domain;
@@ -144,7 +146,7 @@ int solve(const SolveOptions& o) {
   }
   const auto start = std::chrono::steady_clock::now();
   for (uint32_t f = o.start_frame; f < frames; ++f) {
-    if (o.publish) {
+    if (o.publish || o.vmc_port) {
       // Stream at the recording's own rate, as a live rig would.
       const auto due = start + std::chrono::microseconds(static_cast<int64_t>((f - o.start_frame) * 1e6 / o.rate_hz));
       std::this_thread::sleep_until(due);

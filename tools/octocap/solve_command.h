@@ -21,6 +21,8 @@ struct SolveOptions {
   unsigned start_frame = 0;
   double linger_s = 0.5;
   unsigned wait_subscribers = 0;
+  unsigned vmc_port = 0;
+  std::string vmc_host = "127.0.0.1";
 };
 
 int run_solve(const SolveOptions& options);

@@ -56,6 +56,9 @@ extern "C" {
 /** ABI version, bumped on any incompatible change of this header. Compare with octocap_abi_version(). */
 #define OCTOCAP_ABI_VERSION 1
 
+/** The port VMC protocol receivers (Virtual Motion Capture, VSeeFace, EVMC4U) listen on by default. */
+#define OCTOCAP_VMC_DEFAULT_PORT 39539
+
 /** Length of the fixed-size name fields, including the terminating NUL. */
 #define OCTOCAP_NAME_CAPACITY 32
 
@@ -306,6 +309,9 @@ typedef struct octocap_session_config_t {
   uint32_t stream_history_depth; /**< Poses a RECORD stream keeps for late joiners. Default 256. */
   uint32_t stream_source_id;     /**< Identifies this rig on a shared topic (the DDS key). Default 1. */
   char stream_topic[OCTOCAP_NAME_CAPACITY]; /**< Topic base name, "<name>_pose" and "<name>_definition". Default "octocap". */
+  uint32_t vmc_port;             /**< Non-zero: also send every frame as VMC protocol (OSC/UDP) to this port;
+                                      VMC's usual port is ::OCTOCAP_VMC_DEFAULT_PORT. Default 0 (off). */
+  char vmc_host[64];             /**< Receiver of the VMC output. Default "127.0.0.1". */
 } octocap_session_config_t;
 
 /** Fills `cfg` with defaults and sets its struct_size. */

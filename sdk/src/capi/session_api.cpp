@@ -70,6 +70,12 @@ SessionConfig from_c(const octocap_session_config_t& given) {
   s.publish = c.stream_enable != 0;
   if (s.publish) s.stream = capi::stream_config(c.stream_domain_id, c.stream_qos, c.stream_history_depth,
                                                 c.stream_source_id, c.stream_topic, sizeof c.stream_topic);
+  if (c.vmc_port > 65535) throw Error(Errc::invalid_argument, "config.vmc_port must be 0..65535");
+  s.vmc_port = static_cast<uint16_t>(c.vmc_port);
+  const size_t host_len = strnlen(c.vmc_host, sizeof c.vmc_host);
+  if (s.vmc_port && (host_len == 0 || host_len == sizeof c.vmc_host))
+    throw Error(Errc::invalid_argument, "config.vmc_host must be a NUL-terminated host name");
+  s.vmc_host.assign(c.vmc_host, host_len);
   return s;
 }
 
@@ -108,6 +114,8 @@ void octocap_session_config_init(octocap_session_config_t* c) {
   c->stream_history_depth = 256;
   c->stream_source_id = 1;
   capi::copy_name(c->stream_topic, sizeof c->stream_topic, "octocap");
+  c->vmc_port = 0;
+  capi::copy_name(c->vmc_host, sizeof c->vmc_host, "127.0.0.1");
 }
 
 octocap_result_t octocap_session_create(const octocap_session_config_t* cfg, const octocap_calibration_t* calib,

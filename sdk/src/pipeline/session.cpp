@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "io/motion_files.h"
 #include "stream/dds_publisher.h"
+#include "stream/vmc_sender.h"
 #include "solve/person_select.h"
 #include "solve/subdivision.h"
 #include "solve/triangulation.h"
@@ -59,6 +60,13 @@ Session::Session(const SessionConfig& config, Calibration calib)
     publisher_ = std::make_unique<DdsPublisher>(config_.stream, config_.layout);
 #else
     throw Error(Errc::unsupported, "this build of octocap has no DDS streaming (OCTOCAP_WITH_DDS=OFF)");
+#endif
+  }
+  if (config_.vmc_port != 0) {
+#ifdef OCTOCAP_HAVE_DDS
+    vmc_ = std::make_unique<VmcSender>(config_.vmc_host, config_.vmc_port);
+#else
+    throw Error(Errc::unsupported, "this build of octocap has no VMC output (OCTOCAP_WITH_DDS=OFF)");
 #endif
   }
 }
@@ -200,6 +208,7 @@ void Session::solve(const std::vector<std::vector<Person2D>>& people, int64_t ti
 void Session::publish() {
 #ifdef OCTOCAP_HAVE_DDS
   if (publisher_) publisher_->publish(frame_);
+  if (vmc_) vmc_->send(frame_);
 #endif
 }
 

@@ -40,9 +40,12 @@ struct SessionConfig {
   int64_t first_frame_index = 0;  // frame numbers start here (a capture resumed mid-take keeps its numbering)
   bool publish = false;           // stream every frame over DDS
   StreamConfig stream;
+  uint16_t vmc_port = 0;          // 0: no VMC output
+  std::string vmc_host = "127.0.0.1";
 };
 
 class DdsPublisher;
+class VmcSender;
 
 
 class Session {
@@ -89,6 +92,7 @@ class Session {
   Method method_ = Method::subdivision;
   std::unique_ptr<WorkerPool> pool_;
   std::unique_ptr<DdsPublisher> publisher_;
+  std::unique_ptr<VmcSender> vmc_;
 
   FrameResult frame_;
   std::vector<Eigen::Vector3d> raw_previous_;  // unfiltered, for person tracking; empty when unknown

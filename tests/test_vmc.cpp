@@ -1,0 +1,156 @@
+// VMC protocol output checked by a real OSC receiver written here: a UDP socket on loopback and a parser of
+// OSC bundles written from the OSC 1.0 spec, independent of the sender's library.
+#include <arpa/inet.h>
+#include <catch2/catch_test_macros.hpp>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cstring>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "octocap/octocap.h"
+#include "support/capi_helpers.h"
+
+namespace {
+
+struct OscMessage {
+  std::string address;
+  std::string name;  // first string argument, if any
+  std::vector<float> floats;
+  std::vector<int32_t> ints;
+};
+
+struct Reader {
+  const uint8_t* p;
+  size_t left;
+  uint32_t u32() {
+    REQUIRE(left >= 4);
+    uint32_t v;
+    std::memcpy(&v, p, 4);
+    p += 4;
+    left -= 4;
+    return ntohl(v);
+  }
+  std::string str() {
+    const size_t n = strnlen(reinterpret_cast<const char*>(p), left);
+    REQUIRE(n < left);
+    std::string s(reinterpret_cast<const char*>(p), n);
+    const size_t padded = (n + 4) & ~size_t{3};
+    p += padded;
+    left -= padded;
+    return s;
+  }
+};
+
+OscMessage parse_message(const uint8_t* data, size_t size) {
+  Reader r{data, size};
+  OscMessage m;
+  m.address = r.str();
+  const std::string tags = r.str();
+  REQUIRE(tags[0] == ',');
+  for (char t : tags.substr(1)) {
+    if (t == 'f') {
+      const uint32_t bits = r.u32();
+      float f;
+      std::memcpy(&f, &bits, 4);
+      m.floats.push_back(f);
+    } else if (t == 'i') {
+      m.ints.push_back(static_cast<int32_t>(r.u32()));
+    } else if (t == 's') {
+      m.name = r.str();
+    } else {
+      FAIL("unexpected OSC type tag " << t);
+    }
+  }
+  return m;
+}
+
+std::vector<OscMessage> parse_bundle(const std::vector<uint8_t>& packet) {
+  REQUIRE(packet.size() >= 16);
+  REQUIRE(std::memcmp(packet.data(), "#bundle\0", 8) == 0);
+  Reader r{packet.data() + 16, packet.size() - 16};
+  std::vector<OscMessage> out;
+  while (r.left > 0) {
+    const uint32_t n = r.u32();
+    REQUIRE(n <= r.left);
+    out.push_back(parse_message(r.p, n));
+    r.p += n;
+    r.left -= n;
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("VMC output: a real OSC receiver gets every bone as octocap solved it, in Unity's frame", "[vmc]") {
+  const int sock = socket(AF_INET, SOCK_DGRAM, 0);
+  REQUIRE(sock >= 0);
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  REQUIRE(bind(sock, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0);
+  socklen_t len = sizeof addr;
+  REQUIRE(getsockname(sock, reinterpret_cast<sockaddr*>(&addr), &len) == 0);
+  timeval tv{2, 0};
+  setsockopt(sock, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
+
+  const std::string sample = std::string(OCTOCAP_SOURCE_DIR) + "/data/sample";
+  octocap_calibration_t* c = nullptr;
+  REQUIRE(octocap_calibration_load((sample + "/calibration.toml").c_str(), &c) == OCTOCAP_OK);
+  testing::Calib calib(c);
+  octocap_recording_t* rec = nullptr;
+  REQUIRE(octocap_recording_open((sample + "/keypoints").c_str(), OCTOCAP_LAYOUT_AUTO, &rec) == OCTOCAP_OK);
+  octocap_session_config_t cfg;
+  octocap_session_config_init(&cfg);
+  cfg.vmc_port = ntohs(addr.sin_port);
+  testing::Session s = testing::make_session(calib.get(), cfg);
+  std::vector<octocap_keypoint2d_t> buf(4096);
+  uint32_t people[8], n = 0;
+  for (uint32_t f = 0; f < 5; ++f) {
+    REQUIRE(octocap_recording_read_frame(rec, f, buf.data(), 4096, &n, people, 5) == OCTOCAP_OK);
+    REQUIRE(octocap_session_solve_keypoints(s.get(), buf.data(), people, 5, f * 33333) == OCTOCAP_OK);
+    std::vector<uint8_t> packet(65536);
+    const ssize_t got = recv(sock, packet.data(), packet.size(), 0);
+    REQUIRE(got > 0);
+    packet.resize(static_cast<size_t>(got));
+    const auto messages = parse_bundle(packet);
+
+    octocap_bone_pose_t bones[OCTOCAP_BONE_COUNT];
+    REQUIRE(octocap_session_get_bones(s.get(), OCTOCAP_FRAME_UNITY, bones, OCTOCAP_BONE_COUNT, &n) == OCTOCAP_OK);
+    std::map<std::string, OscMessage> by_bone;
+    bool ok = false, root = false;
+    for (const auto& m : messages) {
+      if (m.address == "/VMC/Ext/Bone/Pos") by_bone[m.name] = m;
+      if (m.address == "/VMC/Ext/OK") ok = m.ints.at(0) == 1;
+      if (m.address == "/VMC/Ext/Root/Pos") {
+        root = true;
+        REQUIRE(m.floats.size() == 7);
+        for (int k = 0; k < 3; ++k) REQUIRE(m.floats[k] == bones[0].head_position[k]);
+        REQUIRE(m.floats[6] == bones[0].global_rotation.w);
+      }
+    }
+    REQUIRE(ok);
+    REQUIRE(root);
+    REQUIRE(by_bone.size() == OCTOCAP_BONE_COUNT);
+    const std::pair<const char*, int> checks[] = {{"LeftLowerArm", OCTOCAP_BONE_L_LOWER_ARM},
+                                                  {"RightUpperLeg", OCTOCAP_BONE_R_UPPER_LEG},
+                                                  {"Spine", OCTOCAP_BONE_TORSO}};
+    for (const auto& [name, bone] : checks) {
+      INFO(name);
+      const OscMessage& m = by_bone.at(name);
+      REQUIRE(m.floats.size() == 7);
+      REQUIRE(m.floats[3] == bones[bone].local_rotation.x);
+      REQUIRE(m.floats[4] == bones[bone].local_rotation.y);
+      REQUIRE(m.floats[5] == bones[bone].local_rotation.z);
+      REQUIRE(m.floats[6] == bones[bone].local_rotation.w);
+    }
+    // The lower arm hangs off the upper arm's tail: its local position is the upper arm's length along it.
+    const OscMessage& lower = by_bone.at("LeftLowerArm");
+    REQUIRE(std::abs(lower.floats[0]) == bones[OCTOCAP_BONE_L_UPPER_ARM].length_m);
+  }
+  octocap_recording_destroy(rec);
+  close(sock);
+}
