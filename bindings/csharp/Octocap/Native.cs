@@ -131,6 +131,8 @@ namespace Octocap
         public uint StreamHistoryDepth;
         public uint StreamSourceId;
         public fixed byte StreamTopic[32];
+        public uint VmcPort;
+        public fixed byte VmcHost[64];
 
         /// <summary>The library's defaults (octocap_session_config_init), struct_size set.</summary>
         public static SessionConfig Default

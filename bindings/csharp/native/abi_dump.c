@@ -47,6 +47,7 @@ static void layout(void) {
   FIELD(octocap_session_config_t, stream_enable); FIELD(octocap_session_config_t, stream_domain_id);
   FIELD(octocap_session_config_t, stream_qos); FIELD(octocap_session_config_t, stream_history_depth);
   FIELD(octocap_session_config_t, stream_source_id); FIELD(octocap_session_config_t, stream_topic);
+  FIELD(octocap_session_config_t, vmc_port); FIELD(octocap_session_config_t, vmc_host);
   SIZE(octocap_subscriber_config_t);
   FIELD(octocap_subscriber_config_t, struct_size); FIELD(octocap_subscriber_config_t, domain_id);
   FIELD(octocap_subscriber_config_t, qos); FIELD(octocap_subscriber_config_t, history_depth);
