@@ -203,20 +203,22 @@ int solve(const SolveOptions& o) {
   check(octocap_motion_writer_close(trc.release()), "writing the TRC");
   if (csv) check(octocap_motion_writer_close(csv.release()), "writing the CSV");
 
+  const uint32_t done = frames > o.start_frame ? frames - o.start_frame : 0;  // frames this run solved
   double mean_err = 0;
   for (double e : errors) mean_err += e;
   mean_err = errors.empty() ? NAN : mean_err / errors.size();
   std::printf("octocap solve: %u frames x %u cameras, layout %s (%u keypoints), method %s, filter %s, up %s\n",
               frames, views, octocap_layout_name(layout), K, method_name.c_str(), o.filter.c_str(),
               up == OCTOCAP_UP_Z ? "Z" : "Y");
-  std::printf("  frames solved:        %zu / %u (%zu with several people in a view)\n", frames_with_result, frames,
+  std::printf("  frames solved:        %zu / %u (%zu with several people in a view)\n", frames_with_result, done,
               frames_multi);
-  std::printf("  keypoints solved:     %zu / %zu (%.1f%%)\n", solved_keypoints, static_cast<size_t>(frames) * K,
-              frames ? 100.0 * solved_keypoints / (static_cast<double>(frames) * K) : 0.0);
+  std::printf("  keypoints solved:     %zu / %zu (%.1f%%)\n", solved_keypoints, static_cast<size_t>(done) * K,
+              done ? 100.0 * solved_keypoints / (static_cast<double>(done) * K) : 0.0);
   std::printf("  reprojection error:   mean %.2f px, median %.2f px\n", mean_err, median(errors));
-  std::printf("  3D solve time:        %.3f ms/frame; end to end (JSON parsing included) %.2f ms/frame, %.0f frames/s\n",
-              frames ? solve_ms / frames : 0.0, frames ? total_ms / frames : 0.0,
-              total_ms > 0 ? frames * 1000.0 / total_ms : 0.0);
+  std::printf("  3D solve time:        %.3f ms/frame; end to end (JSON parsing included) %.2f ms/frame, %.0f frames/s%s\n",
+              done ? solve_ms / done : 0.0, done ? total_ms / done : 0.0,
+              total_ms > 0 ? done * 1000.0 / total_ms : 0.0,
+              o.publish || o.vmc_port ? " (paced at --rate for streaming)" : "");
   if (!o.ground_truth.empty()) {
     std::printf("  accuracy vs %s: MPJPE %.1f mm over %zu keypoint observations\n", o.ground_truth.c_str(),
                 acc.count ? acc.sum_mm / acc.count : NAN, acc.count);
