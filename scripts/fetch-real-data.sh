@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Real data for the integration tests: Pose2Sim's demo (BSD-3-Clause), 4 real cameras with a Qualisys
 # calibration, 100 frames of real OpenPose BODY_25B detections (with a bystander), and Pose2Sim's own 3D.
-# Taken from the pose2sim 0.4.15 wheel on PyPI, unpacked once into .cache/ (not committed).
+# Taken from the pose2sim 0.4.15 wheel on PyPI, unpacked once into .cache/ (not committed); its checkerboard
+# images of the same 4 cameras test the intrinsics calibration against the Qualisys one.
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 DEST="$ROOT/.cache/pose2sim-0.4.15"
-if [ -f "$DEST/.complete" ]; then exit 0; fi
+if [ -f "$DEST/.complete-2" ]; then exit 0; fi
 TMP="$(mktemp -d)"
 trap 'rm -rf "$TMP"' EXIT
 PIP="pip3"
@@ -18,6 +19,7 @@ python3 - "$TMP"/pose2sim-0.4.15-*.whl "$DEST" <<'PY'
 import sys, zipfile, os
 wheel, dest = sys.argv[1], sys.argv[2]
 keep = ("Pose2Sim/Demo/calibration/Calib_qualisys.toml", "Pose2Sim/Demo/pose/",
+        "Pose2Sim/Demo/calibration/intrinsics/",
         "Pose2Sim/Demo/opensim/Balancing_for_IK.trc", "Pose2Sim/Demo/User/Config.toml")
 with zipfile.ZipFile(wheel) as z:
     for name in z.namelist():
@@ -30,4 +32,4 @@ PY
 cat > "$DEST/LICENSE-NOTE.txt" <<'TXT'
 From the pose2sim 0.4.15 wheel (PyPI), Pose2Sim/Demo: BSD-3-Clause, (c) David Pagnon.
 TXT
-touch "$DEST/.complete"
+touch "$DEST/.complete-2"

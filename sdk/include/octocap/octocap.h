@@ -238,6 +238,7 @@ OCTOCAP_API octocap_result_t octocap_calibration_project(const octocap_calibrati
 /** Destroys a calibration; NULL is accepted. Sessions created from it keep their own copy. */
 OCTOCAP_API void octocap_calibration_destroy(octocap_calibration_t* calib);
 
+
 /** @} */
 /* ------------------------------------------------------------------------------------------------------ */
 /** @name Session: per-frame solve */
@@ -546,6 +547,60 @@ OCTOCAP_API octocap_result_t octocap_recording_read_frame(octocap_recording_t* r
                                                           octocap_keypoint2d_t* keypoints, uint32_t capacity,
                                                           uint32_t* keypoint_count, uint32_t* people_per_view,
                                                           uint32_t view_count);
+
+/** @} */
+/* ------------------------------------------------------------------------------------------------------ */
+/** @name Calibrating (stage 1): intrinsics from a board, extrinsics from a person */
+/** @{ */
+
+/**
+ * Intrinsics and distortion of one camera from a folder of checkerboard images. `board` is
+ * "checkerboard:COLSxROWS:SQUARE_M" (inner corners, metres). Unreadable, blurred and partial views are
+ * rejected (they are logged); at least 3 good views are needed. The camera's pose in `out` is identity.
+ */
+OCTOCAP_API octocap_result_t octocap_calibration_solve_intrinsics(const char* images_dir, const char* board,
+                                                                  octocap_camera_t* out, float* rms_px,
+                                                                  uint32_t* images_used, uint32_t* images_rejected);
+
+/** Options of octocap_calibration_solve_extrinsics(). Fill with octocap_extrinsics_options_init() first. */
+typedef struct octocap_extrinsics_options_t {
+  uint32_t struct_size;          /**< sizeof(octocap_extrinsics_options_t). */
+  float person_height_m;         /**< Scale from the person's standing height, or (when > 0) ... */
+  float camera_distance_m;       /**< ... from the measured distance between two cameras: */
+  int32_t distance_camera_a;     /**< first camera of that distance (index), */
+  int32_t distance_camera_b;     /**< second camera. */
+  float min_confidence;          /**< Keypoints below are not used. Default 0.4. */
+  uint32_t max_frames;           /**< More frames are subsampled evenly. Default 1500. */
+  octocap_up_axis_t up_axis;     /**< World frame of the result: Y (default) or Z up. */
+} octocap_extrinsics_options_t;
+
+/** What a calibration achieved. */
+typedef struct octocap_calibration_report_t {
+  uint32_t camera_count;
+  float rms_px[64];              /**< Per camera: RMS reprojection error of the inlier observations. */
+  uint32_t observations[64];     /**< Per camera: inlier observations used. */
+  uint32_t points;               /**< 3D points reconstructed. */
+  uint32_t iterations;           /**< Bundle adjustment iterations. */
+  float initial_rms_px;          /**< Before bundle adjustment. */
+  float final_rms_px;            /**< After. */
+} octocap_calibration_report_t;
+
+/** Fills `opt` with defaults and sets its struct_size. */
+OCTOCAP_API void octocap_extrinsics_options_init(octocap_extrinsics_options_t* opt);
+
+/**
+ * Every camera's pose from a person moving through the volume: their 2D keypoints in `rec` (one folder per
+ * camera, same order as `intrinsics`) are the common points. Pairwise essential matrix, cameras added by PnP,
+ * bundle adjustment (Ceres) over all cameras and points; scale from the person's height or a camera distance;
+ * world origin on the floor below the person, up along the person. Intrinsics and distortion are taken from
+ * `intrinsics` (its poses are ignored). `report` may be NULL. Errors name disconnected camera groups,
+ * degenerate motion and a missing scale.
+ */
+OCTOCAP_API octocap_result_t octocap_calibration_solve_extrinsics(const octocap_calibration_t* intrinsics,
+                                                                  octocap_recording_t* rec,
+                                                                  const octocap_extrinsics_options_t* opt,
+                                                                  octocap_calibration_t** out,
+                                                                  octocap_calibration_report_t* report);
 
 /** @} */
 /* ------------------------------------------------------------------------------------------------------ */

@@ -2,6 +2,7 @@
 #include <cstring>
 
 #include "capi/boundary.h"
+#include "capi/camera_c.h"
 #include "capi/handles.h"
 #include "io/calibration_toml.h"
 
@@ -29,7 +30,9 @@ Camera from_c(const octocap_camera_t& c, uint32_t index) {
   return cam;
 }
 
-void to_c(const Camera& cam, octocap_camera_t& c) {
+}  // namespace
+
+void capi::camera_to_c(const Camera& cam, octocap_camera_t& c) {
   capi::copy_name(c.name, sizeof c.name, cam.name);
   c.width = static_cast<uint32_t>(cam.width);
   c.height = static_cast<uint32_t>(cam.height);
@@ -42,6 +45,8 @@ void to_c(const Camera& cam, octocap_camera_t& c) {
     c.translation[i] = cam.t[i];
   }
 }
+
+namespace {
 
 const Camera& camera_at(const octocap_calibration_t* calib, uint32_t index) {
   capi::checked(calib, "calibration");
@@ -99,7 +104,7 @@ octocap_result_t octocap_calibration_get_camera(const octocap_calibration_t* cal
   return capi::guard([&] {
     const Camera& cam = camera_at(calib, index);
     capi::require(out, "out");
-    to_c(cam, *out);
+    capi::camera_to_c(cam, *out);
   });
 }
 

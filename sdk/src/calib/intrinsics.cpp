@@ -1,0 +1,103 @@
+#include "calib/intrinsics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <opencv2/calib3d.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <regex>
+
+#include "core/error.h"
+#include "core/log.h"
+
+namespace fs = std::filesystem;
+
+namespace octocap {
+
+BoardSpec parse_board(const std::string& spec) {
+  static const std::regex re(R"(checkerboard:(\d+)x(\d+):([0-9]*\.?[0-9]+))");
+  std::smatch m;
+  if (spec.rfind("charuco:", 0) == 0)
+    throw Error(Errc::unsupported, "ChArUco boards are not supported yet; use checkerboard:COLSxROWS:SQUARE_M");
+  if (!std::regex_match(spec, m, re))
+    throw Error(Errc::invalid_argument, "board '" + spec + "' is not checkerboard:COLSxROWS:SQUARE_M (inner corners, metres)");
+  BoardSpec b{std::stoi(m[1]), std::stoi(m[2]), std::stod(m[3])};
+  if (b.cols < 2 || b.rows < 2 || !(b.square_m > 0))
+    throw Error(Errc::invalid_argument, "board '" + spec + "' needs at least 2x2 inner corners and a square size > 0");
+  return b;
+}
+
+Camera calibrate_intrinsics(const std::string& directory, const BoardSpec& board, IntrinsicsReport* report) {
+  std::error_code ec;
+  if (!fs::is_directory(directory, ec)) throw Error(Errc::io, directory + ": not a directory");
+  std::vector<std::string> files;
+  for (const auto& e : fs::directory_iterator(directory, ec)) {
+    std::string ext = e.path().extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (e.is_regular_file() && (ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".bmp" || ext == ".tif"))
+      files.push_back(e.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  if (files.empty()) throw Error(Errc::io, directory + ": no image files (png, jpg, bmp, tif)");
+
+  std::vector<cv::Point3f> board_points;
+  for (int r = 0; r < board.rows; ++r)
+    for (int c = 0; c < board.cols; ++c)
+      board_points.emplace_back(static_cast<float>(c * board.square_m), static_cast<float>(r * board.square_m), 0.f);
+
+  IntrinsicsReport local;
+  IntrinsicsReport& rep = report ? *report : local;
+  std::vector<std::vector<cv::Point3f>> object;
+  std::vector<std::vector<cv::Point2f>> image;
+  cv::Size size;
+  for (const std::string& f : files) {
+    const cv::Mat gray = cv::imread(f, cv::IMREAD_GRAYSCALE);
+    if (gray.empty()) {
+      rep.rejected.push_back(f + ": unreadable image");
+      continue;
+    }
+    if (size.area() == 0) size = gray.size();
+    if (gray.size() != size) {
+      rep.rejected.push_back(f + ": size differs from the first image");
+      continue;
+    }
+    std::vector<cv::Point2f> corners;
+    // The sector-based detector finds boards in blurred and low-contrast images and is accurate to subpixels.
+    const bool found = cv::findChessboardCornersSB(gray, cv::Size(board.cols, board.rows), corners,
+                                                   cv::CALIB_CB_NORMALIZE_IMAGE | cv::CALIB_CB_EXHAUSTIVE |
+                                                       cv::CALIB_CB_ACCURACY);
+    if (!found || corners.size() != board_points.size()) {
+      rep.rejected.push_back(f + ": the whole board was not found (partial or no view)");
+      continue;
+    }
+    // Sharpness at the board: the width of its edges (OpenCV calls under 3 px sharp at VGA). Edges widen with
+    // resolution, so the limit is relative: 0.5 % of the image diagonal, at least 4 px.
+    const cv::Scalar sharp = cv::estimateChessboardSharpness(gray, cv::Size(board.cols, board.rows), corners);
+    const double limit = std::max(4.0, 0.005 * std::hypot(gray.cols, gray.rows));
+    if (sharp[0] > limit) {
+      rep.rejected.push_back(f + ": blurred (edge width " + std::to_string(sharp[0]) + " px)");
+      continue;
+    }
+    object.push_back(board_points);
+    image.push_back(corners);
+    rep.used.push_back(f);
+  }
+  for (const auto& r : rep.rejected) log(LogLevel::info, "intrinsics: rejected " + r);
+  if (image.size() < 3)
+    throw Error(Errc::not_enough_views, directory + ": " + std::to_string(image.size()) +
+                                            " usable board views, at least 3 are needed (" +
+                                            std::to_string(rep.rejected.size()) + " rejected)");
+  cv::Mat K = cv::Mat::eye(3, 3, CV_64F), dist = cv::Mat::zeros(1, 5, CV_64F);
+  std::vector<cv::Mat> rvecs, tvecs;
+  rep.rms_px = cv::calibrateCamera(object, image, size, K, dist, rvecs, tvecs);
+  Camera cam;
+  cam.name = fs::path(directory).filename().string();
+  cam.width = size.width;
+  cam.height = size.height;
+  for (int i = 0; i < 9; ++i) cam.K(i / 3, i % 3) = K.at<double>(i / 3, i % 3);
+  for (int i = 0; i < 5; ++i) cam.dist[i] = dist.at<double>(i);
+  return cam;
+}
+
+}  // namespace octocap

@@ -1,0 +1,26 @@
+// Stage 1a: a camera's intrinsics and distortion from images of a checkerboard (OpenCV).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/camera.h"
+
+namespace octocap {
+
+struct BoardSpec {
+  int cols = 0, rows = 0;   // inner corners
+  double square_m = 0;
+};
+// "checkerboard:COLSxROWS:SQUARE_M"; throws Error(invalid_argument) naming what is wrong.
+BoardSpec parse_board(const std::string& spec);
+
+struct IntrinsicsReport {
+  double rms_px = 0;
+  std::vector<std::string> used, rejected;  // image files, and why each rejected one was
+};
+
+// Every image file in `directory` (png, jpg, jpeg, bmp, tif). Images that are unreadable, blurred, or where
+// the whole board is not found are rejected with a reason; at least 3 good views are required.
+Camera calibrate_intrinsics(const std::string& directory, const BoardSpec& board, IntrinsicsReport* report);
+
+}  // namespace octocap

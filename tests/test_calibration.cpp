@@ -1,0 +1,244 @@
+// Calibration against ground truth the test makes (synthetic rigs and real CMU motion) and against a real
+// lab calibration (Pose2Sim's demo: Qualisys-calibrated cameras, their checkerboard images and keypoints).
+#include <catch2/catch_test_macros.hpp>
+#include <catch2/generators/catch_generators.hpp>
+#include <catch2/matchers/catch_matchers_string.hpp>
+#include <Eigen/Geometry>
+#include <cmath>
+#include <filesystem>
+#include <random>
+
+#include "calib/extrinsics.h"
+#include "calib/intrinsics.h"
+#include "core/error.h"
+#include "io/calibration_toml.h"
+#include "octocap/octocap.h"
+#include "pipeline/session.h"
+#include "support/temp_dir.h"
+#include "synth.h"
+
+using namespace octocap;
+using Catch::Matchers::ContainsSubstring;
+
+namespace {
+
+using Frames = std::vector<std::vector<std::vector<Person2D>>>;
+
+Frames observe_all(const Calibration& cams, const synth::Motion& m, const synth::NoiseOptions& noise, unsigned seed) {
+  std::mt19937 rng(seed);
+  Frames frames;
+  for (const auto& f : m.frames) frames.push_back(synth::observe(cams, f, LayoutId::body25, noise, rng));
+  return frames;
+}
+
+// The similarity (or rigid, scale = false) transform taking `got` camera centres onto `truth`'s.
+Eigen::Matrix4d align(const Calibration& truth, const Calibration& got, bool scale) {
+  Eigen::Matrix3Xd A(3, truth.size()), B(3, got.size());
+  for (size_t i = 0; i < truth.size(); ++i) {
+    A.col(i) = truth[i].center();
+    B.col(i) = got[i].center();
+  }
+  return Eigen::umeyama(B, A, scale);
+}
+
+// `got` moved into truth's world frame by T (x_truth = s R x_got + t).
+Calibration transformed(const Calibration& got, const Eigen::Matrix4d& T) {
+  const double s = T.block<3, 3>(0, 0).col(0).norm();
+  const Eigen::Matrix3d R = T.block<3, 3>(0, 0) / s;
+  const Eigen::Vector3d t = T.block<3, 1>(0, 3);
+  Calibration out = got;
+  for (Camera& c : out) {
+    // x_cam = R_c x_got + t_c, x_got = R^T (x_truth - t) / s  ->  metric camera frame scaled by s.
+    c.R = got[&c - out.data()].R * R.transpose();
+    c.t = s * got[&c - out.data()].t - c.R * t;
+  }
+  return out;
+}
+
+double mpjpe_with(const Calibration& calib, const synth::Motion& m, const Frames& frames) {
+  SessionConfig cfg;
+  cfg.filter = false;
+  cfg.method = Method::triangulation;
+  cfg.up = UpAxis::y;
+  Session s(cfg, calib);
+  double err = 0;
+  size_t n = 0;
+  for (size_t f = 0; f < frames.size(); ++f) {
+    s.solve(frames[f], static_cast<int64_t>(f) * 33333);
+    for (size_t k = 0; k < m.frames[f].size(); ++k)
+      if (s.keypoints()[k].valid) err += (s.keypoints()[k].position - m.frames[f][k]).norm(), ++n;
+  }
+  return 1000 * err / n;
+}
+
+const std::string kDemo = std::string(OCTOCAP_REAL_DATA_DIR) + "/Demo";
+
+}  // namespace
+
+TEST_CASE("extrinsics from a person: cameras recovered from noisy, partly wrong keypoints", "[calib]") {
+  synth::RigOptions rig;
+  rig.cameras = GENERATE(4, 6);
+  const Calibration truth = synth::make_camera_ring(rig);
+  const synth::Motion motion = synth::load_cmu_motion(synth::default_bvh_path(), 0, 350, 6);
+  const Frames frames = observe_all(truth, motion, {1.0, 0.03, 0.02, 0.01}, 5);
+  ExtrinsicsOptions opt;
+  opt.distance_camera_a = 0;
+  opt.distance_camera_b = rig.cameras / 2;
+  opt.camera_distance_m = (truth[0].center() - truth[rig.cameras / 2].center()).norm();
+  ExtrinsicsReport rep;
+  const Calibration got = calibrate_extrinsics(truth, frames, LayoutId::body25, opt, &rep);
+  INFO(rig.cameras << " cameras, BA RMS " << rep.initial_rms_px << " -> " << rep.final_rms_px);
+  // The scale is fixed by the distance, so only a rigid motion separates the two worlds.
+  const Eigen::Matrix4d T = align(truth, got, false);
+  const Calibration moved = transformed(got, T);
+  double worst_centre = 0, worst_angle = 0;
+  for (size_t i = 0; i < truth.size(); ++i) {
+    worst_centre = std::max(worst_centre, (moved[i].center() - truth[i].center()).norm());
+    worst_angle = std::max(worst_angle, Eigen::AngleAxisd(moved[i].R * truth[i].R.transpose()).angle());
+  }
+  INFO("worst centre " << worst_centre * 1000 << " mm, worst rotation " << worst_angle * 180 / M_PI << " deg");
+  CHECK(worst_centre < 0.01);                // 10 mm in a ~8 m wide rig
+  CHECK(worst_angle * 180 / M_PI < 0.2);
+  for (double r : rep.rms_px) CHECK(r < 3.0);  // inliers: pixel noise is 1 px
+  // What matters: 3D accuracy with the recovered calibration equals that with the true one.
+  const double with_truth = mpjpe_with(truth, motion, frames), with_got = mpjpe_with(moved, motion, frames);
+  INFO("MPJPE " << with_truth << " mm (true calibration) vs " << with_got << " mm (recovered)");
+  CHECK(with_got < with_truth + 1.0);
+  // Up and floor: the person stands on y = 0 in the recovered world, up along +Y.
+  Eigen::Vector3d up = T.block<3, 3>(0, 0).transpose() * Eigen::Vector3d::UnitY();
+  CHECK(up.y() > 0.99);
+}
+
+TEST_CASE("extrinsics: the scale from the person's height", "[calib]") {
+  const Calibration truth = synth::make_camera_ring({});
+  const synth::Motion motion = synth::load_cmu_motion(synth::default_bvh_path(), 0, 300, 6);
+  // The height whose keypoint path (ankle-knee-hip-neck-head) the anthropometric ratio expects.
+  std::vector<double> paths;
+  const auto& lay = layout(LayoutId::body25);
+  auto joint = [&](const std::vector<Eigen::Vector3d>& f, int j) {
+    Eigen::Vector3d s = Eigen::Vector3d::Zero();
+    for (int k : lay.joint_sources[j].front()) s += f[k];
+    return Eigen::Vector3d(s / static_cast<double>(lay.joint_sources[j].front().size()));
+  };
+  for (const auto& f : motion.frames) {
+    const double legs = 0.5 * ((joint(f, kLFoot) - joint(f, kLKnee)).norm() + (joint(f, kLKnee) - joint(f, kLHip)).norm() +
+                               (joint(f, kRFoot) - joint(f, kRKnee)).norm() + (joint(f, kRKnee) - joint(f, kRHip)).norm());
+    paths.push_back(legs + (joint(f, kNeck) - 0.5 * (joint(f, kLHip) + joint(f, kRHip))).norm() +
+                    (joint(f, kHead) - joint(f, kNeck)).norm());
+  }
+  std::nth_element(paths.begin(), paths.begin() + paths.size() / 2, paths.end());
+  ExtrinsicsOptions opt;
+  opt.person_height_m = paths[paths.size() / 2] / kKeypointPathOfHeight;
+  const Calibration got = calibrate_extrinsics(truth, observe_all(truth, motion, {1.0, 0, 0, 0}, 8), LayoutId::body25, opt, nullptr);
+  const Eigen::Matrix4d T = align(truth, got, true);
+  const double scale = T.block<3, 3>(0, 0).col(0).norm();
+  CHECK(std::abs(scale - 1.0) < 0.02);
+}
+
+TEST_CASE("extrinsics: clear errors", "[calib]") {
+  const Calibration truth = synth::make_camera_ring({});
+  const synth::Motion motion = synth::load_cmu_motion(synth::default_bvh_path(), 0, 120, 6);
+  Frames frames = observe_all(truth, motion, {1.0, 0, 0, 0}, 9);
+  ExtrinsicsOptions opt;
+  SECTION("no scale") {
+    REQUIRE_THROWS_WITH(calibrate_extrinsics(truth, frames, LayoutId::body25, opt, nullptr),
+                        ContainsSubstring("height") && ContainsSubstring("distance"));
+  }
+  opt.person_height_m = 1.7;
+  SECTION("one camera") {
+    REQUIRE_THROWS_WITH(calibrate_extrinsics({truth[0]}, frames, LayoutId::body25, opt, nullptr),
+                        ContainsSubstring("at least 2 cameras"));
+  }
+  SECTION("a camera that never sees the person") {
+    for (auto& f : frames) f[3].clear();
+    REQUIRE_THROWS_WITH(calibrate_extrinsics(truth, frames, LayoutId::body25, opt, nullptr),
+                        ContainsSubstring("cam_4") && ContainsSubstring("too few"));
+  }
+  SECTION("two groups of cameras that never see the person at the same time: named") {
+    for (size_t f = 0; f < frames.size(); ++f)
+      for (size_t v = 0; v < frames[f].size(); ++v)
+        if ((v < 2) == (f % 2 == 0)) frames[f][v].clear();
+    REQUIRE_THROWS_WITH(calibrate_extrinsics(truth, frames, LayoutId::body25, opt, nullptr),
+                        ContainsSubstring("[cam_1, cam_2]") && ContainsSubstring("[cam_3, cam_4, cam_5]"));
+  }
+  SECTION("degenerate motion: every keypoint at one spot") {
+    std::mt19937 rng(1);
+    Frames flat;
+    for (size_t f = 0; f < 60; ++f) {
+      std::vector<Eigen::Vector3d> same(25, Eigen::Vector3d(0.1, 1.0, 0.2));
+      flat.push_back(synth::observe(truth, same, LayoutId::body25, {0.5, 0, 0, 0}, rng));
+    }
+    REQUIRE_THROWS_WITH(calibrate_extrinsics(truth, flat, LayoutId::body25, opt, nullptr), ContainsSubstring("degenerate"));
+  }
+}
+
+TEST_CASE("intrinsics: errors for bad boards, unreadable and too few images", "[calib]") {
+  testing::TempDir dir;
+  REQUIRE_THROWS_WITH(parse_board("checkerboard:9x6"), ContainsSubstring("COLSxROWS:SQUARE_M"));
+  REQUIRE_THROWS_AS(parse_board("charuco:5x7:0.04:0.03"), Error);
+  REQUIRE_THROWS_WITH(calibrate_intrinsics(dir.file("none"), parse_board("checkerboard:9x6:0.025"), nullptr),
+                      ContainsSubstring("not a directory"));
+  dir.write("imgs/a.png", "not an image");
+  dir.write("imgs/b.jpg", "neither");
+  IntrinsicsReport rep;
+  REQUIRE_THROWS_WITH(calibrate_intrinsics(dir.file("imgs"), parse_board("checkerboard:9x6:0.025"), &rep),
+                      ContainsSubstring("at least 3"));
+  REQUIRE(rep.rejected.size() == 2);
+  REQUIRE_THAT(rep.rejected[0], ContainsSubstring("unreadable"));
+}
+
+TEST_CASE("real checkerboard images give the lab's focal length within 1%", "[calib][real]") {
+  INFO("real data missing: run scripts/fetch-real-data.sh (scripts/test.sh does)");
+  REQUIRE(std::filesystem::exists(kDemo + "/calibration/intrinsics/int_cam2_img"));
+  const Calibration lab = read_calibration_toml(kDemo + "/calibration/Calib_qualisys.toml");
+  IntrinsicsReport rep;
+  const Camera cam = calibrate_intrinsics(kDemo + "/calibration/intrinsics/int_cam2_img",
+                                          parse_board("checkerboard:4x7:0.06"), &rep);
+  INFO("fx " << cam.K(0, 0) << " vs lab " << lab[1].K(0, 0) << ", RMS " << rep.rms_px << " px, used " << rep.used.size());
+  CHECK(std::abs(cam.K(0, 0) / lab[1].K(0, 0) - 1) < 0.01);
+  CHECK(std::abs(cam.K(1, 1) / lab[1].K(1, 1) - 1) < 0.01);
+  CHECK(std::abs(cam.K(0, 2) - lab[1].K(0, 2)) < 30);
+  CHECK(rep.rms_px < 1.0);
+  CHECK(rep.used.size() >= 3);
+}
+
+TEST_CASE("real keypoints of a person give the lab's camera layout", "[calib][real]") {
+  REQUIRE(std::filesystem::exists(kDemo + "/pose"));
+  octocap_calibration_t* lab = nullptr;
+  REQUIRE(octocap_calibration_load((kDemo + "/calibration/Calib_qualisys.toml").c_str(), &lab) == OCTOCAP_OK);
+  octocap_recording_t* rec = nullptr;
+  REQUIRE(octocap_recording_open((kDemo + "/pose").c_str(), OCTOCAP_LAYOUT_AUTO, &rec) == OCTOCAP_OK);
+  octocap_extrinsics_options_t opt;
+  octocap_extrinsics_options_init(&opt);
+  opt.person_height_m = 1.7f;
+  opt.up_axis = OCTOCAP_UP_Z;
+  octocap_calibration_t* got = nullptr;
+  octocap_calibration_report_t rep;
+  const octocap_result_t r = octocap_calibration_solve_extrinsics(lab, rec, &opt, &got, &rep);
+  INFO(octocap_last_error());
+  REQUIRE(r == OCTOCAP_OK);
+  Calibration a, b;
+  for (uint32_t i = 0; i < 4; ++i) {
+    octocap_camera_t c;
+    octocap_calibration_get_camera(lab, i, &c);
+    Camera ca;
+    ca.R = rodrigues_to_matrix({c.rotation[0], c.rotation[1], c.rotation[2]});
+    ca.t = {c.translation[0], c.translation[1], c.translation[2]};
+    a.push_back(ca);
+    octocap_calibration_get_camera(got, i, &c);
+    Camera cb;
+    cb.R = rodrigues_to_matrix({c.rotation[0], c.rotation[1], c.rotation[2]});
+    cb.t = {c.translation[0], c.translation[1], c.translation[2]};
+    b.push_back(cb);
+  }
+  const Eigen::Matrix4d T = align(a, b, true);
+  double worst = 0;
+  for (size_t i = 0; i < 4; ++i)
+    worst = std::max(worst, ((T * b[i].center().homogeneous()).head<3>() - a[i].center()).norm());
+  INFO("worst camera centre vs Qualisys " << worst * 1000 << " mm; BA RMS " << rep.final_rms_px << " px");
+  CHECK(worst < 0.10);
+  CHECK(rep.points > 1000);
+  octocap_calibration_destroy(got);
+  octocap_recording_destroy(rec);
+  octocap_calibration_destroy(lab);
+}
