@@ -6,6 +6,9 @@
 #include <regex>
 #include <string>
 
+#include <Eigen/Geometry>
+
+#include "io/calibration_toml.h"
 #include "io/motion_files.h"
 #include "support/temp_dir.h"
 
@@ -18,8 +21,8 @@ struct Run {
   std::string output;
 };
 
-Run run(const std::string& args) {
-  const std::string cmd = std::string(OCTOCAP_CLI_PATH) + " " + args + " 2>&1";
+Run run(const std::string& args, const char* program = OCTOCAP_CLI_PATH) {
+  const std::string cmd = std::string(program) + " " + args + " 2>&1";
   Run r{0, ""};
   FILE* p = popen(cmd.c_str(), "r");
   REQUIRE(p != nullptr);
@@ -88,4 +91,44 @@ TEST_CASE("octocap --help and layouts", "[cli]") {
   r = run("layouts");
   REQUIRE(r.status == 0);
   REQUIRE_THAT(r.output, ContainsSubstring("BODY_25B (25 keypoints): Nose LEye REye"));
+}
+
+TEST_CASE("octocap-calibrate extrinsics recovers the sample's cameras from its keypoints", "[cli][calib]") {
+  testing::TempDir dir;
+  const octocap::Calibration truth = octocap::read_calibration_toml(kSample + "/calibration.toml");
+  const double d = (truth[0].center() - truth[2].center()).norm();
+  const Run r = run("extrinsics --calibration " + kSample + "/calibration.toml --keypoints " + kSample +
+                        "/keypoints --camera-distance cam_1:cam_3:" + std::to_string(d) + " --output " +
+                        dir.file("c.toml"),
+                    OCTOCAP_CALIBRATE_PATH);
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  REQUIRE_THAT(r.output, ContainsSubstring("bundle adjustment") && ContainsSubstring("RMS"));
+  const octocap::Calibration got = octocap::read_calibration_toml(dir.file("c.toml"));
+  REQUIRE(got.size() == truth.size());
+  Eigen::Matrix3Xd A(3, truth.size()), B(3, got.size());
+  for (size_t i = 0; i < truth.size(); ++i) {
+    A.col(i) = truth[i].center();
+    B.col(i) = got[i].center();
+    REQUIRE((got[i].K - truth[i].K).norm() < 1e-9);  // intrinsics are kept as given
+  }
+  const Eigen::Matrix4d T = Eigen::umeyama(B, A, false);
+  for (size_t i = 0; i < truth.size(); ++i)
+    CHECK(((T * B.col(i).homogeneous()).head<3>() - A.col(i)).norm() < 0.02);
+}
+
+TEST_CASE("octocap-calibrate refuses what it cannot do, saying why", "[cli][calib]") {
+  testing::TempDir dir;
+  Run r = run("extrinsics --calibration " + kSample + "/calibration.toml --keypoints " + kSample + "/keypoints --output " +
+                  dir.file("c.toml"),
+              OCTOCAP_CALIBRATE_PATH);
+  REQUIRE(r.status != 0);
+  REQUIRE_THAT(r.output, ContainsSubstring("height") && ContainsSubstring("distance"));
+  r = run("intrinsics --images " + dir.path().string() + " --board checkerboard:9x6 --output " + dir.file("i.toml"),
+          OCTOCAP_CALIBRATE_PATH);
+  REQUIRE(r.status != 0);
+  REQUIRE_THAT(r.output, ContainsSubstring("COLSxROWS:SQUARE_M"));
+  r = run("--help", OCTOCAP_CALIBRATE_PATH);
+  REQUIRE(r.status == 0);
+  REQUIRE_THAT(r.output, ContainsSubstring("intrinsics") && ContainsSubstring("extrinsics"));
 }
