@@ -135,6 +135,24 @@ TEST_CASE("extrinsics: the scale from the person's height", "[calib]") {
   CHECK(std::abs(scale - 1.0) < 0.02);
 }
 
+TEST_CASE("refining a calibration puts a nudged camera back and keeps the world frame", "[calib]") {
+  const Calibration truth = synth::make_camera_ring({});
+  const synth::Motion motion = synth::load_cmu_motion(synth::default_bvh_path(), 0, 250, 6);
+  const Frames frames = observe_all(truth, motion, {1.0, 0.03, 0.02, 0}, 12);
+  Calibration nudged = truth;
+  const Eigen::Vector3d centre = nudged[2].center() + Eigen::Vector3d(0.06, -0.03, 0.04);
+  nudged[2].R = Eigen::AngleAxisd(2.0 * M_PI / 180, Eigen::Vector3d(0.3, 1, 0.2).normalized()).toRotationMatrix() * nudged[2].R;
+  nudged[2].t = -nudged[2].R * centre;
+  ExtrinsicsOptions opt;
+  opt.refine = true;
+  const Calibration got = calibrate_extrinsics(nudged, frames, LayoutId::body25, opt, nullptr);
+  for (size_t i = 0; i < truth.size(); ++i) {
+    INFO("camera " << i << ": centre off by " << (got[i].center() - truth[i].center()).norm() * 1000 << " mm");
+    CHECK((got[i].center() - truth[i].center()).norm() < 0.01);
+    CHECK(Eigen::AngleAxisd(got[i].R * truth[i].R.transpose()).angle() * 180 / M_PI < 0.2);
+  }
+}
+
 TEST_CASE("extrinsics: clear errors", "[calib]") {
   const Calibration truth = synth::make_camera_ring({});
   const synth::Motion motion = synth::load_cmu_motion(synth::default_bvh_path(), 0, 120, 6);

@@ -59,7 +59,7 @@ int run_intrinsics(const std::string& images, const std::string& board, const st
 }
 
 int run_extrinsics(const std::string& in, const std::string& keypoints, double height, const std::string& distance,
-                   const std::string& up, const std::string& output) {
+                   const std::string& up, const std::string& output, bool refine) {
   octocap_calibration_t* intr = nullptr;
   if (octocap_calibration_load(in.c_str(), &intr) != OCTOCAP_OK) return fail(in);
   std::unique_ptr<octocap_calibration_t, void (*)(octocap_calibration_t*)> intr_guard(intr, octocap_calibration_destroy);
@@ -70,6 +70,7 @@ int run_extrinsics(const std::string& in, const std::string& keypoints, double h
   octocap_extrinsics_options_init(&opt);
   opt.person_height_m = static_cast<float>(height);
   opt.up_axis = up == "z" ? OCTOCAP_UP_Z : OCTOCAP_UP_Y;
+  opt.refine = refine ? 1 : 0;
   if (!distance.empty()) {
     // CAM_A:CAM_B:METRES, cameras by index or name.
     const size_t c1 = distance.find(':'), c2 = distance.rfind(':');
@@ -130,7 +131,11 @@ int main(int argc, char** argv) {
   extr->add_option("--camera-distance", distance, "CAM_A:CAM_B:METRES, a measured distance (sets the scale exactly)");
   extr->add_option("--up", up, "Up axis of the written world frame")->check(CLI::IsMember({"y", "z"}))->capture_default_str();
   extr->add_option("--output", output, "Calibration TOML to write")->required();
+  CLI::App* refine = app.add_subcommand("refine", "Refine an existing calibration from new keypoints (a camera was nudged)");
+  refine->add_option("--calibration", in, "The calibration to refine")->required()->check(CLI::ExistingFile);
+  refine->add_option("--keypoints", keypoints, "One OpenPose JSON folder per camera")->required()->check(CLI::ExistingDirectory);
+  refine->add_option("--output", output, "Calibration TOML to write")->required();
   CLI11_PARSE(app, argc, argv);
   if (intr->parsed()) return run_intrinsics(images, board, output);
-  return run_extrinsics(in, keypoints, height, distance, up, output);
+  return run_extrinsics(in, keypoints, height, distance, up, output, refine->parsed());
 }

@@ -572,6 +572,8 @@ typedef struct octocap_extrinsics_options_t {
   float min_confidence;          /**< Keypoints below are not used. Default 0.4. */
   uint32_t max_frames;           /**< More frames are subsampled evenly. Default 1500. */
   octocap_up_axis_t up_axis;     /**< World frame of the result: Y (default) or Z up. */
+  uint32_t refine;               /**< 1: refine the given poses (a camera was nudged), keeping their world frame
+                                      and scale; no height or distance needed. Default 0. */
 } octocap_extrinsics_options_t;
 
 /** What a calibration achieved. */

@@ -73,7 +73,8 @@ BaResult bundle_adjust(Calibration& calib, const std::vector<bool>& adjust, int 
         new ReprojectionCost(calib[o.camera], o.pixel));
     problem.AddResidualBlock(cost, new ceres::HuberLoss(huber_px), poses[o.camera].data(), points[o.point].data());
   }
-  if (problem.HasParameterBlock(poses[fixed_camera].data())) problem.SetParameterBlockConstant(poses[fixed_camera].data());
+  if (fixed_camera >= 0 && problem.HasParameterBlock(poses[fixed_camera].data()))
+    problem.SetParameterBlockConstant(poses[fixed_camera].data());
   ceres::Solver::Options options;
   options.linear_solver_type = ceres::DENSE_SCHUR;  // few cameras, many points: the reduced camera system is small
   options.max_num_iterations = max_iterations;

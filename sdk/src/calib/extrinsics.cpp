@@ -87,6 +87,82 @@ void triangulate_new(const Calibration& calib, const std::vector<bool>& placed, 
   }
 }
 
+// Refinement: every camera starts where the given calibration has it. Bundle adjustment moves them all; the
+// result is then put back into the original frame by the similarity that best maps the new camera centres
+// onto the old ones, leaving out the camera that moved most (the nudged one) when there are 4 or more.
+Calibration refine_extrinsics(const Calibration& given, const std::vector<std::vector<Obs>>& by_point,
+                              ExtrinsicsReport* report) {
+  const int V = static_cast<int>(given.size());
+  Calibration calib = given;
+  std::vector<bool> placed(V, true), known(by_point.size(), false);
+  std::vector<Eigen::Vector3d> points(by_point.size(), Eigen::Vector3d::Zero());
+  // Generous: the nudged camera disagrees with the others until the adjustment has moved it.
+  triangulate_new(calib, placed, by_point, points, known, 200.0);
+  std::vector<BaObservation> obs;
+  for (const auto& po : by_point)
+    for (const Obs& o : po)
+      if (known[o.point]) obs.push_back({o.camera, o.point, o.pixel});
+  if (obs.size() < 50)
+    throw Error(Errc::invalid_argument, "too few keypoints agree with the given calibration to refine it");
+  std::vector<bool> adjust(V, true);
+  const BaResult r1 = bundle_adjust(calib, adjust, -1, points, obs, 2.0, 100);
+  std::vector<double> errs;
+  for (const auto& o : obs) {
+    const Eigen::Vector2d p = calib[o.camera].project(points[o.point]);
+    errs.push_back(p.allFinite() ? (p - o.pixel).norm() : 1e9);
+  }
+  const double limit = std::max(5.0, 3 * median(errs));
+  std::vector<BaObservation> inl;
+  for (size_t i = 0; i < obs.size(); ++i)
+    if (errs[i] < limit) inl.push_back(obs[i]);
+  const BaResult r2 = bundle_adjust(calib, adjust, -1, points, inl, 2.0, 100);
+
+  auto similarity = [&](int skip) {
+    const int n = V - (skip >= 0 ? 1 : 0);
+    Eigen::Matrix3Xd A(3, n), B(3, n);
+    for (int v = 0, i = 0; v < V; ++v) {
+      if (v == skip) continue;
+      A.col(i) = given[v].center();
+      B.col(i++) = calib[v].center();
+    }
+    return Eigen::Matrix4d(Eigen::umeyama(B, A, true));
+  };
+  Eigen::Matrix4d T = similarity(-1);
+  if (V >= 4) {
+    int worst = 0;
+    double worst_d = -1;
+    for (int v = 0; v < V; ++v) {
+      const double d = ((T * calib[v].center().homogeneous()).head<3>() - given[v].center()).norm();
+      if (d > worst_d) worst_d = d, worst = v;
+    }
+    T = similarity(worst);
+  }
+  const double s = T.block<3, 3>(0, 0).col(0).norm();
+  const Eigen::Matrix3d R = T.block<3, 3>(0, 0) / s;
+  const Eigen::Vector3d t = T.block<3, 1>(0, 3);
+  for (Camera& c : calib) {
+    c.R = c.R * R.transpose();
+    c.t = s * c.t - c.R * t;
+  }
+  if (report) {
+    report->rms_px.assign(V, 0);
+    report->observations.assign(V, 0);
+    std::vector<double> sum(V, 0);
+    for (const auto& o : inl) {
+      const Eigen::Vector2d p = calib[o.camera].project(s * R * points[o.point] + t);
+      sum[o.camera] += (p - o.pixel).squaredNorm();
+      ++report->observations[o.camera];
+    }
+    for (int v = 0; v < V; ++v)
+      report->rms_px[v] = report->observations[v] ? std::sqrt(sum[v] / report->observations[v]) : 0;
+    report->points = static_cast<size_t>(std::count(known.begin(), known.end(), true));
+    report->iterations = r1.iterations + r2.iterations;
+    report->initial_rms_px = r1.initial_rms_px;
+    report->final_rms_px = r2.final_rms_px;
+  }
+  return calib;
+}
+
 }  // namespace
 
 Calibration calibrate_extrinsics(const Calibration& intrinsics,
@@ -95,7 +171,7 @@ Calibration calibrate_extrinsics(const Calibration& intrinsics,
   const int V = static_cast<int>(intrinsics.size());
   if (V < 2) throw Error(Errc::not_enough_views, "extrinsics need at least 2 cameras, the calibration has " + std::to_string(V));
   const bool by_distance = opt.camera_distance_m > 0;
-  if (!(opt.person_height_m > 0) && !by_distance)
+  if (!opt.refine && !(opt.person_height_m > 0) && !by_distance)
     throw Error(Errc::invalid_argument, "the scale of the scene cannot be seen in images: give the person's height or a camera distance");
   if (by_distance && (opt.distance_camera_a < 0 || opt.distance_camera_b < 0 || opt.distance_camera_a >= V ||
                       opt.distance_camera_b >= V || opt.distance_camera_a == opt.distance_camera_b))
@@ -170,6 +246,8 @@ Calibration calibrate_extrinsics(const Calibration& intrinsics,
       throw Error(Errc::not_enough_views, msg + "; walk where both groups see the person");
     }
   }
+
+  if (opt.refine) return refine_extrinsics(intrinsics, by_point, report);
 
   // Initial pair: the one sharing the most points. Essential matrix on undistorted normalised points.
   int a = 0, b = 1;

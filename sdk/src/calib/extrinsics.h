@@ -19,6 +19,9 @@ struct ExtrinsicsOptions {
   double min_confidence = 0.4;
   size_t max_frames = 1500;    // frames beyond this are subsampled evenly
   bool z_up = false;           // output world frame: Y up (octocap) or Z up
+  // Refine an existing calibration (a camera was nudged): start from the given poses, bundle-adjust, and keep
+  // the original world frame and scale (no height or distance needed).
+  bool refine = false;
 };
 
 struct ExtrinsicsReport {

@@ -71,6 +71,7 @@ octocap_result_t octocap_calibration_solve_extrinsics(const octocap_calibration_
     o.min_confidence = opt->min_confidence;
     o.max_frames = std::max<uint32_t>(opt->max_frames, 10);
     o.z_up = opt->up_axis == OCTOCAP_UP_Z;
+    o.refine = opt->refine != 0;
     ExtrinsicsReport rep;
     Calibration c = calibrate_extrinsics(intrinsics->cameras, frames, r.layout(), o, &rep);
     *out = capi::make_handle<octocap_calibration_t>(std::move(c));
