@@ -12,6 +12,7 @@
 
 #include "stream/dds_publisher.h"
 #include "stream/dds_subscriber.h"
+#include "loopback_dds.h"
 
 using namespace octocap;
 using Clock = std::chrono::steady_clock;
@@ -80,16 +81,9 @@ void run(double hz, StreamQos qos, uint32_t domain) {
 }  // namespace
 
 int main() {
-  if (!std::getenv("CYCLONEDDS_URI"))
-    setenv("CYCLONEDDS_URI",
-           "<CycloneDDS><Domain Id=\"any\"><General><Interfaces><NetworkInterface name=\"lo\"/></Interfaces>"
-           "<AllowMulticast>false</AllowMulticast></General><Discovery><Peers><Peer address=\"127.0.0.1\"/></Peers>"
-           "<ParticipantIndex>auto</ParticipantIndex><MaxAutoParticipantIndex>50</MaxAutoParticipantIndex>"
-           "</Discovery></Domain></CycloneDDS>",
-           1);
   std::printf("octocap stream benchmark: skeleton pose sample (25 keypoints, 15 joints, 13 bones), loopback,\n"
               "publish() call -> subscriber take, 2 s per row\n\n");
-  const uint32_t domain = 1 + static_cast<uint32_t>(getpid() % 200);
+  const uint32_t domain = testing::loopback_dds_domain();
   for (StreamQos qos : {StreamQos::live, StreamQos::record})
     for (double hz : {60.0, 120.0, 1000.0}) run(hz, qos, domain);
   return 0;

@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <random>
 
+#include <opencv2/core.hpp>
+
 #include "calib/extrinsics.h"
 #include "calib/intrinsics.h"
 #include "core/error.h"
@@ -188,6 +190,31 @@ TEST_CASE("extrinsics: clear errors", "[calib]") {
     }
     REQUIRE_THROWS_WITH(calibrate_extrinsics(truth, flat, LayoutId::body25, opt, nullptr), ContainsSubstring("degenerate"));
   }
+}
+
+TEST_CASE("OpenCV YAML export reads back in OpenCV", "[calib][formats]") {
+  testing::TempDir dir;
+  const Calibration truth = synth::make_camera_ring({});
+  octocap_calibration_t* c = nullptr;
+  write_calibration_toml(truth, dir.file("c.toml"));
+  REQUIRE(octocap_calibration_load(dir.file("c.toml").c_str(), &c) == OCTOCAP_OK);
+  REQUIRE(octocap_calibration_save_opencv_yaml(c, dir.file("c.yml").c_str()) == OCTOCAP_OK);
+  octocap_calibration_destroy(c);
+  cv::FileStorage fs(dir.file("c.yml"), cv::FileStorage::READ);
+  REQUIRE(fs.isOpened());
+  REQUIRE(static_cast<int>(fs["camera_count"]) == 5);
+  cv::Mat K, R, t, d;
+  fs["cam_3"]["camera_matrix"] >> K;
+  fs["cam_3"]["rotation_matrix"] >> R;
+  fs["cam_3"]["tvec"] >> t;
+  fs["cam_3"]["distortion_coefficients"] >> d;
+  for (int i = 0; i < 9; ++i) {
+    CHECK(std::abs(K.at<double>(i / 3, i % 3) - truth[2].K(i / 3, i % 3)) < 1e-9);
+    CHECK(std::abs(R.at<double>(i / 3, i % 3) - truth[2].R(i / 3, i % 3)) < 1e-9);
+  }
+  CHECK(std::abs(t.at<double>(2) - truth[2].t.z()) < 1e-12);
+  CHECK(std::abs(d.at<double>(0) - truth[2].dist[0]) < 1e-12);
+  CHECK(static_cast<std::string>(fs["cam_3"]["name"]) == "cam_3");
 }
 
 TEST_CASE("intrinsics: errors for bad boards, unreadable and too few images", "[calib]") {

@@ -15,25 +15,14 @@
 #include "stream/dds_entities.h"
 #include "support/capi_helpers.h"
 #include "support/child_process.h"
+#include "support/loopback_dds.h"
 
 namespace {
 
 const std::string kSample = std::string(OCTOCAP_SOURCE_DIR) + "/data/sample";
 constexpr int kRate = 200;  // Hz: 90 frames in under half a second
 
-// Loopback only, no multicast (as the workplace requires); a domain of its own per test run.
-uint32_t test_domain() {
-  static const uint32_t domain = [] {
-    setenv("CYCLONEDDS_URI",
-           "<CycloneDDS><Domain Id=\"any\"><General><Interfaces><NetworkInterface name=\"lo\"/></Interfaces>"
-           "<AllowMulticast>false</AllowMulticast></General><Discovery><Peers><Peer address=\"127.0.0.1\"/></Peers>"
-           "<ParticipantIndex>auto</ParticipantIndex><MaxAutoParticipantIndex>50</MaxAutoParticipantIndex>"
-           "</Discovery></Domain></CycloneDDS>",
-           1);
-    return static_cast<uint32_t>(1 + getpid() % 200);
-  }();
-  return domain;
-}
+uint32_t test_domain() { return testing::loopback_dds_domain(); }
 
 struct SubscriberDeleter {
   void operator()(octocap_subscriber_t* s) const { octocap_subscriber_destroy(s); }

@@ -13,6 +13,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
+std::string g_yaml;  // --yaml: also write OpenCV YAML
+
+int save(const octocap_calibration_t* calib, const std::string& output);
+
 int fail(const std::string& what) {
   std::fprintf(stderr, "octocap-calibrate: error: %s: %s\n", what.c_str(), octocap_last_error());
   return 1;
@@ -47,9 +51,9 @@ int run_intrinsics(const std::string& images, const std::string& board, const st
   octocap_calibration_t* calib = nullptr;
   if (octocap_calibration_create(cams.data(), static_cast<uint32_t>(cams.size()), &calib) != OCTOCAP_OK)
     return fail("building the calibration");
-  const octocap_result_t saved = octocap_calibration_save(calib, output.c_str());
+  const int saved = save(calib, output);
   octocap_calibration_destroy(calib);
-  if (saved != OCTOCAP_OK) return fail(output);
+  if (saved != 0) return saved;
   std::printf("%-16s %9s %9s %9s %7s %7s %9s\n", "camera", "fx", "fy", "k1", "images", "reject", "RMS px");
   for (size_t i = 0; i < cams.size(); ++i)
     std::printf("%-16s %9.1f %9.1f %9.4f %7u %7u %9.3f\n", cams[i].name, cams[i].matrix[0], cams[i].matrix[4],
@@ -97,7 +101,7 @@ int run_extrinsics(const std::string& in, const std::string& keypoints, double h
   octocap_calibration_t* out = nullptr;
   octocap_calibration_report_t rep;
   if (octocap_calibration_solve_extrinsics(intr, rec, &opt, &out, &rep) != OCTOCAP_OK) return fail("extrinsics");
-  const octocap_result_t saved = octocap_calibration_save(out, output.c_str());
+  const int saved = save(out, output);
   std::printf("%-16s %12s %9s %24s\n", "camera", "observations", "RMS px", "centre (m)");
   for (uint32_t i = 0; i < rep.camera_count; ++i) {
     octocap_camera_t c;
@@ -107,8 +111,15 @@ int run_extrinsics(const std::string& in, const std::string& keypoints, double h
   std::printf("bundle adjustment: %u points, %u iterations, RMS %.2f -> %.2f px\n", rep.points, rep.iterations,
               rep.initial_rms_px, rep.final_rms_px);
   octocap_calibration_destroy(out);
-  if (saved != OCTOCAP_OK) return fail(output);
+  if (saved != 0) return saved;
   std::printf("wrote %s\n", output.c_str());
+  return 0;
+}
+
+int save(const octocap_calibration_t* calib, const std::string& output) {
+  if (octocap_calibration_save(calib, output.c_str()) != OCTOCAP_OK) return fail(output);
+  if (!g_yaml.empty() && octocap_calibration_save_opencv_yaml(calib, g_yaml.c_str()) != OCTOCAP_OK) return fail(g_yaml);
+  if (!g_yaml.empty()) std::printf("wrote %s (OpenCV YAML)\n", g_yaml.c_str());
   return 0;
 }
 
@@ -135,6 +146,7 @@ int main(int argc, char** argv) {
   refine->add_option("--calibration", in, "The calibration to refine")->required()->check(CLI::ExistingFile);
   refine->add_option("--keypoints", keypoints, "One OpenPose JSON folder per camera")->required()->check(CLI::ExistingDirectory);
   refine->add_option("--output", output, "Calibration TOML to write")->required();
+  for (CLI::App* sub : {intr, extr, refine}) sub->add_option("--yaml", g_yaml, "Also write the calibration as OpenCV YAML");
   CLI11_PARSE(app, argc, argv);
   if (intr->parsed()) return run_intrinsics(images, board, output);
   return run_extrinsics(in, keypoints, height, distance, up, output, refine->parsed());

@@ -227,6 +227,9 @@ OCTOCAP_API octocap_result_t octocap_calibration_create(const octocap_camera_t* 
                                                         octocap_calibration_t** out);
 /** Writes the calibration as anipose/Pose2Sim TOML. */
 OCTOCAP_API octocap_result_t octocap_calibration_save(const octocap_calibration_t* calib, const char* path);
+/** Writes the calibration as OpenCV YAML (cv::FileStorage: camera_matrix, distortion_coefficients, rvec,
+ *  rotation_matrix, tvec per `cam_N`), for tools that read OpenCV's format. */
+OCTOCAP_API octocap_result_t octocap_calibration_save_opencv_yaml(const octocap_calibration_t* calib, const char* path);
 /** Number of cameras. */
 OCTOCAP_API octocap_result_t octocap_calibration_camera_count(const octocap_calibration_t* calib, uint32_t* out);
 /** Copies camera `index`. */

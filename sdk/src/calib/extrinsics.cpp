@@ -87,6 +87,22 @@ void triangulate_new(const Calibration& calib, const std::vector<bool>& placed, 
   }
 }
 
+// Observations within 3x the median reprojection error (at least 5 px): wrong detections and left/right
+// swaps lie far out.
+std::vector<BaObservation> inlier_observations(const Calibration& calib, const std::vector<Eigen::Vector3d>& points,
+                                   const std::vector<BaObservation>& obs) {
+  std::vector<double> errs;
+  for (const auto& o : obs) {
+    const Eigen::Vector2d p = calib[o.camera].project(points[o.point]);
+    errs.push_back(p.allFinite() ? (p - o.pixel).norm() : 1e9);
+  }
+  const double limit = std::max(5.0, 3 * median(errs));
+  std::vector<BaObservation> out;
+  for (size_t i = 0; i < obs.size(); ++i)
+    if (errs[i] < limit) out.push_back(obs[i]);
+  return out;
+}
+
 // Refinement: every camera starts where the given calibration has it. Bundle adjustment moves them all; the
 // result is then put back into the original frame by the similarity that best maps the new camera centres
 // onto the old ones, leaving out the camera that moved most (the nudged one) when there are 4 or more.
@@ -106,15 +122,7 @@ Calibration refine_extrinsics(const Calibration& given, const std::vector<std::v
     throw Error(Errc::invalid_argument, "too few keypoints agree with the given calibration to refine it");
   std::vector<bool> adjust(V, true);
   const BaResult r1 = bundle_adjust(calib, adjust, -1, points, obs, 2.0, 100);
-  std::vector<double> errs;
-  for (const auto& o : obs) {
-    const Eigen::Vector2d p = calib[o.camera].project(points[o.point]);
-    errs.push_back(p.allFinite() ? (p - o.pixel).norm() : 1e9);
-  }
-  const double limit = std::max(5.0, 3 * median(errs));
-  std::vector<BaObservation> inl;
-  for (size_t i = 0; i < obs.size(); ++i)
-    if (errs[i] < limit) inl.push_back(obs[i]);
+  const std::vector<BaObservation> inl = inlier_observations(calib, points, obs);
   const BaResult r2 = bundle_adjust(calib, adjust, -1, points, inl, 2.0, 100);
 
   auto similarity = [&](int skip) {
@@ -344,16 +352,7 @@ Calibration calibrate_extrinsics(const Calibration& intrinsics,
       if (known[o.point]) obs.push_back({o.camera, o.point, o.pixel});
   std::vector<bool> adjust(V, true);
   BaResult r1 = bundle_adjust(calib, adjust, a, points, obs, 2.0, 100);
-  // Inliers: within 3x the median error (at least 5 px). Wrong detections and left/right swaps are far out.
-  std::vector<double> errs;
-  for (const auto& o : obs) {
-    const Eigen::Vector2d p = calib[o.camera].project(points[o.point]);
-    errs.push_back(p.allFinite() ? (p - o.pixel).norm() : 1e9);
-  }
-  const double limit = std::max(5.0, 3 * median(errs));
-  std::vector<BaObservation> inl;
-  for (size_t i = 0; i < obs.size(); ++i)
-    if (errs[i] < limit) inl.push_back(obs[i]);
+  const std::vector<BaObservation> inl = inlier_observations(calib, points, obs);
   BaResult r2 = bundle_adjust(calib, adjust, a, points, inl, 2.0, 100);
 
   // Scale.

@@ -5,6 +5,7 @@
 #include "capi/camera_c.h"
 #include "capi/handles.h"
 #include "io/calibration_toml.h"
+#include "io/calibration_yaml.h"
 
 using namespace octocap;
 
@@ -88,6 +89,14 @@ octocap_result_t octocap_calibration_save(const octocap_calibration_t* calib, co
     capi::checked(calib, "calibration");
     capi::require(path, "path");
     write_calibration_toml(calib->cameras, path);
+  });
+}
+
+octocap_result_t octocap_calibration_save_opencv_yaml(const octocap_calibration_t* calib, const char* path) {
+  return capi::guard([&] {
+    capi::checked(calib, "calibration");
+    capi::require(path, "path");
+    write_calibration_opencv_yaml(calib->cameras, path);
   });
 }
 
