@@ -10,6 +10,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "calib/board_extrinsics.h"
 #include "calib/extrinsics.h"
 #include "calib/intrinsics.h"
 #include "core/error.h"
@@ -109,6 +110,50 @@ TEST_CASE("extrinsics from a person: cameras recovered from noisy, partly wrong 
   // Up and floor: the person stands on y = 0 in the recovered world, up along +Y.
   Eigen::Vector3d up = T.block<3, 3>(0, 0).transpose() * Eigen::Vector3d::UnitY();
   CHECK(up.y() > 0.99);
+}
+
+TEST_CASE("extrinsics from a board seen by several cameras at once", "[calib]") {
+  const Calibration truth = synth::make_camera_ring({});
+  const BoardSpec board{9, 6, 0.1};
+  std::mt19937 rng(21);
+  std::normal_distribution<double> noise(0, 0.3);
+  std::uniform_real_distribution<double> u(-1, 1);
+  BoardViews views;
+  for (int s = 0; s < 12; ++s) {
+    // The first board lies on the floor at the origin, its columns along +X, its rows along +Z; the others
+    // stand around the volume, turned and tilted.
+    Eigen::Matrix3d R = (Eigen::Matrix3d() << 1, 0, 0, 0, 0, -1, 0, 1, 0).finished().transpose();
+    R.col(2) = R.col(0).cross(R.col(1));
+    Eigen::Vector3d t = Eigen::Vector3d::Zero();
+    if (s > 0) {
+      R = Eigen::AngleAxisd(u(rng) * M_PI, Eigen::Vector3d::UnitY()) * Eigen::AngleAxisd(M_PI / 2 + 0.4 * u(rng), Eigen::Vector3d::UnitX());
+      t = Eigen::Vector3d(0.8 * u(rng), 1.0 + 0.3 * u(rng), 0.8 * u(rng));
+    }
+    std::vector<std::vector<Eigen::Vector2d>> set(truth.size());
+    for (size_t v = 0; v < truth.size(); ++v) {
+      const Eigen::Vector3d normal = R.col(2);
+      if (std::abs(normal.dot((truth[v].center() - t).normalized())) < 0.3) continue;  // seen too edge-on
+      std::vector<Eigen::Vector2d> px;
+      for (int i = 0; i < board.cols * board.rows; ++i) {
+        const Eigen::Vector3d p = R * Eigen::Vector3d((i % board.cols) * board.square_m, (i / board.cols) * board.square_m, 0) + t;
+        px.push_back(truth[v].project(p) + Eigen::Vector2d(noise(rng), noise(rng)));
+      }
+      set[v] = px;
+    }
+    views.push_back(set);
+  }
+  ExtrinsicsReport rep;
+  const Calibration got = calibrate_extrinsics_from_boards(truth, views, board, false, &rep);
+  for (size_t i = 0; i < truth.size(); ++i) {
+    INFO("camera " << i << " centre off by " << (got[i].center() - truth[i].center()).norm() * 1000 << " mm, RMS " << rep.rms_px[i]);
+    CHECK((got[i].center() - truth[i].center()).norm() < 0.01);  // the same world: the floor board defines it
+    CHECK(Eigen::AngleAxisd(got[i].R * truth[i].R.transpose()).angle() * 180 / M_PI < 0.2);
+    CHECK(rep.rms_px[i] < 1.0);
+  }
+  // A camera that never sees the board with the others is named.
+  BoardViews alone = views;
+  for (auto& set : alone) set[4].clear();
+  REQUIRE_THROWS_WITH(calibrate_extrinsics_from_boards(truth, alone, board, false, nullptr), ContainsSubstring("cam_5"));
 }
 
 TEST_CASE("extrinsics: the scale from the person's height", "[calib]") {

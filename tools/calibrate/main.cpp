@@ -13,7 +13,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string g_yaml;  // --yaml: also write OpenCV YAML
+std::string g_yaml;    // --yaml: also write OpenCV YAML
+std::string g_boards;  // extrinsics --boards: image sets of a board instead of keypoints
+std::string g_board;
 
 int save(const octocap_calibration_t* calib, const std::string& output);
 
@@ -68,7 +70,8 @@ int run_extrinsics(const std::string& in, const std::string& keypoints, double h
   if (octocap_calibration_load(in.c_str(), &intr) != OCTOCAP_OK) return fail(in);
   std::unique_ptr<octocap_calibration_t, void (*)(octocap_calibration_t*)> intr_guard(intr, octocap_calibration_destroy);
   octocap_recording_t* rec = nullptr;
-  if (octocap_recording_open(keypoints.c_str(), OCTOCAP_LAYOUT_AUTO, &rec) != OCTOCAP_OK) return fail(keypoints);
+  if (g_boards.empty() && octocap_recording_open(keypoints.c_str(), OCTOCAP_LAYOUT_AUTO, &rec) != OCTOCAP_OK)
+    return fail(keypoints);
   std::unique_ptr<octocap_recording_t, void (*)(octocap_recording_t*)> rec_guard(rec, octocap_recording_destroy);
   octocap_extrinsics_options_t opt;
   octocap_extrinsics_options_init(&opt);
@@ -96,11 +99,17 @@ int run_extrinsics(const std::string& in, const std::string& keypoints, double h
     opt.distance_camera_b = index_of(distance.substr(c1 + 1, c2 - c1 - 1));
     opt.camera_distance_m = std::stof(distance.substr(c2 + 1));
   }
-  std::fprintf(stderr, "solving extrinsics from %s (pairwise essential matrix, PnP, bundle adjustment)...\n",
-               keypoints.c_str());
   octocap_calibration_t* out = nullptr;
   octocap_calibration_report_t rep;
-  if (octocap_calibration_solve_extrinsics(intr, rec, &opt, &out, &rep) != OCTOCAP_OK) return fail("extrinsics");
+  if (!g_boards.empty()) {
+    std::fprintf(stderr, "solving extrinsics from boards in %s (PnP per view, bundle adjustment)...\n", g_boards.c_str());
+    if (octocap_calibration_solve_extrinsics_boards(intr, g_boards.c_str(), g_board.c_str(), &opt, &out, &rep) != OCTOCAP_OK)
+      return fail("extrinsics");
+  } else {
+    std::fprintf(stderr, "solving extrinsics from %s (pairwise essential matrix, PnP, bundle adjustment)...\n",
+                 keypoints.c_str());
+    if (octocap_calibration_solve_extrinsics(intr, rec, &opt, &out, &rep) != OCTOCAP_OK) return fail("extrinsics");
+  }
   const int saved = save(out, output);
   std::printf("%-16s %12s %9s %24s\n", "camera", "observations", "RMS px", "centre (m)");
   for (uint32_t i = 0; i < rep.camera_count; ++i) {
@@ -137,7 +146,10 @@ int main(int argc, char** argv) {
   intr->add_option("--output", output, "Calibration TOML to write")->required();
   CLI::App* extr = app.add_subcommand("extrinsics", "All camera poses from a person moving through the volume");
   extr->add_option("--calibration", in, "Calibration TOML with the cameras' intrinsics")->required()->check(CLI::ExistingFile);
-  extr->add_option("--keypoints", keypoints, "One OpenPose JSON folder per camera (as `octocap solve` reads)")->required()->check(CLI::ExistingDirectory);
+  CLI::Option* kp = extr->add_option("--keypoints", keypoints, "One OpenPose JSON folder per camera (as `octocap solve` reads)")->check(CLI::ExistingDirectory);
+  CLI::Option* bd = extr->add_option("--boards", g_boards, "Or: one image folder per camera, same file name = same moment, a board seen by several")->check(CLI::ExistingDirectory);
+  extr->add_option("--board", g_board, "With --boards: checkerboard:COLSxROWS:SQUARE_M");
+  kp->excludes(bd);
   extr->add_option("--person-height", height, "The person's height in metres (sets the scale)");
   extr->add_option("--camera-distance", distance, "CAM_A:CAM_B:METRES, a measured distance (sets the scale exactly)");
   extr->add_option("--up", up, "Up axis of the written world frame")->check(CLI::IsMember({"y", "z"}))->capture_default_str();
@@ -149,5 +161,9 @@ int main(int argc, char** argv) {
   for (CLI::App* sub : {intr, extr, refine}) sub->add_option("--yaml", g_yaml, "Also write the calibration as OpenCV YAML");
   CLI11_PARSE(app, argc, argv);
   if (intr->parsed()) return run_intrinsics(images, board, output);
+  if (extr->parsed() && keypoints.empty() && g_boards.empty()) {
+    std::fprintf(stderr, "octocap-calibrate extrinsics: give --keypoints DIR (a person) or --boards DIR --board SPEC\n");
+    return 2;
+  }
   return run_extrinsics(in, keypoints, height, distance, up, output, refine->parsed());
 }

@@ -607,6 +607,18 @@ OCTOCAP_API octocap_result_t octocap_calibration_solve_extrinsics(const octocap_
                                                                   octocap_calibration_t** out,
                                                                   octocap_calibration_report_t* report);
 
+/**
+ * Every camera's pose from a checkerboard seen by several cameras at once. `images_dir` holds one sub-folder per
+ * camera (sorted, in calibration order); images with the same file name were taken at the same moment. The
+ * board's square size sets the scale; the first image set's board lies on the floor and defines the world
+ * (origin at its first inner corner, X along its columns, up along its normal). Only `opt->up_axis` is used.
+ */
+OCTOCAP_API octocap_result_t octocap_calibration_solve_extrinsics_boards(const octocap_calibration_t* intrinsics,
+                                                                         const char* images_dir, const char* board,
+                                                                         const octocap_extrinsics_options_t* opt,
+                                                                         octocap_calibration_t** out,
+                                                                         octocap_calibration_report_t* report);
+
 /** @} */
 /* ------------------------------------------------------------------------------------------------------ */
 /** @name Motion files: TRC (OpenSim/Pose2Sim) and CSV */

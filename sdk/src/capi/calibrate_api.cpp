@@ -2,6 +2,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "calib/board_extrinsics.h"
 #include "calib/extrinsics.h"
 #include "calib/intrinsics.h"
 #include "capi/boundary.h"
@@ -38,6 +39,57 @@ void octocap_extrinsics_options_init(octocap_extrinsics_options_t* o) {
   o->up_axis = OCTOCAP_UP_Y;
 }
 
+namespace {
+
+void to_c_report(const ExtrinsicsReport& rep, octocap_calibration_report_t* report) {
+  if (!report) return;
+  *report = octocap_calibration_report_t{};
+  report->camera_count = static_cast<uint32_t>(rep.rms_px.size());
+  for (size_t v = 0; v < rep.rms_px.size(); ++v) {
+    report->rms_px[v] = static_cast<float>(rep.rms_px[v]);
+    report->observations[v] = static_cast<uint32_t>(rep.observations[v]);
+  }
+  report->points = static_cast<uint32_t>(rep.points);
+  report->iterations = static_cast<uint32_t>(rep.iterations);
+  report->initial_rms_px = static_cast<float>(rep.initial_rms_px);
+  report->final_rms_px = static_cast<float>(rep.final_rms_px);
+}
+
+void check_options(const octocap_extrinsics_options_t* opt, const octocap_calibration_t* intrinsics) {
+  capi::require(opt, "opt");
+  if (opt->struct_size != sizeof(octocap_extrinsics_options_t))
+    throw Error(Errc::struct_size, "octocap_extrinsics_options_t.struct_size is " + std::to_string(opt->struct_size) +
+                                       ", expected " + std::to_string(sizeof(octocap_extrinsics_options_t)));
+  for (float v : {opt->person_height_m, opt->camera_distance_m, opt->min_confidence})
+    capi::require_finite(v, "an extrinsics option");
+  if (opt->up_axis != OCTOCAP_UP_Y && opt->up_axis != OCTOCAP_UP_Z && opt->up_axis != OCTOCAP_UP_AUTO)
+    throw Error(Errc::invalid_argument, "up_axis must be Y or Z");
+  if (intrinsics->cameras.size() > 64) throw Error(Errc::invalid_argument, "at most 64 cameras");
+}
+
+}  // namespace
+
+octocap_result_t octocap_calibration_solve_extrinsics_boards(const octocap_calibration_t* intrinsics,
+                                                             const char* images_dir, const char* board,
+                                                             const octocap_extrinsics_options_t* opt,
+                                                             octocap_calibration_t** out,
+                                                             octocap_calibration_report_t* report) {
+  return capi::guard([&] {
+    capi::require(out, "out");
+    *out = nullptr;
+    capi::checked(intrinsics, "calibration");
+    capi::require(images_dir, "images_dir");
+    capi::require(board, "board");
+    check_options(opt, intrinsics);
+    const BoardSpec spec = parse_board(board);
+    const BoardViews views = detect_board_views(images_dir, intrinsics->cameras.size(), spec);
+    ExtrinsicsReport rep;
+    Calibration c = calibrate_extrinsics_from_boards(intrinsics->cameras, views, spec, opt->up_axis == OCTOCAP_UP_Z, &rep);
+    *out = capi::make_handle<octocap_calibration_t>(std::move(c));
+    to_c_report(rep, report);
+  });
+}
+
 octocap_result_t octocap_calibration_solve_extrinsics(const octocap_calibration_t* intrinsics, octocap_recording_t* rec,
                                                       const octocap_extrinsics_options_t* opt,
                                                       octocap_calibration_t** out,
@@ -47,20 +99,12 @@ octocap_result_t octocap_calibration_solve_extrinsics(const octocap_calibration_
     *out = nullptr;
     capi::checked(intrinsics, "calibration");
     capi::checked(rec, "recording");
-    capi::require(opt, "opt");
-    if (opt->struct_size != sizeof(octocap_extrinsics_options_t))
-      throw Error(Errc::struct_size, "octocap_extrinsics_options_t.struct_size is " + std::to_string(opt->struct_size) +
-                                         ", expected " + std::to_string(sizeof(octocap_extrinsics_options_t)));
-    for (float v : {opt->person_height_m, opt->camera_distance_m, opt->min_confidence})
-      capi::require_finite(v, "an extrinsics option");
-    if (opt->up_axis != OCTOCAP_UP_Y && opt->up_axis != OCTOCAP_UP_Z && opt->up_axis != OCTOCAP_UP_AUTO)
-      throw Error(Errc::invalid_argument, "up_axis must be Y or Z");
+    check_options(opt, intrinsics);
     const auto& r = *rec->recording;
     if (r.view_count() != intrinsics->cameras.size())
       throw Error(Errc::camera_mismatch, "the recording has " + std::to_string(r.view_count()) +
                                              " camera folders, the calibration " +
                                              std::to_string(intrinsics->cameras.size()) + " cameras");
-    if (intrinsics->cameras.size() > 64) throw Error(Errc::invalid_argument, "at most 64 cameras");
     std::vector<std::vector<std::vector<Person2D>>> frames;
     for (size_t f = 0; f < r.frame_count(); ++f) frames.push_back(r.read_frame(f));
     ExtrinsicsOptions o;
@@ -75,18 +119,7 @@ octocap_result_t octocap_calibration_solve_extrinsics(const octocap_calibration_
     ExtrinsicsReport rep;
     Calibration c = calibrate_extrinsics(intrinsics->cameras, frames, r.layout(), o, &rep);
     *out = capi::make_handle<octocap_calibration_t>(std::move(c));
-    if (report) {
-      *report = octocap_calibration_report_t{};
-      report->camera_count = static_cast<uint32_t>(rep.rms_px.size());
-      for (size_t v = 0; v < rep.rms_px.size(); ++v) {
-        report->rms_px[v] = static_cast<float>(rep.rms_px[v]);
-        report->observations[v] = static_cast<uint32_t>(rep.observations[v]);
-      }
-      report->points = static_cast<uint32_t>(rep.points);
-      report->iterations = static_cast<uint32_t>(rep.iterations);
-      report->initial_rms_px = static_cast<float>(rep.initial_rms_px);
-      report->final_rms_px = static_cast<float>(rep.final_rms_px);
-    }
+    to_c_report(rep, report);
   });
 }
 
