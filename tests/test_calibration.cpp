@@ -9,6 +9,7 @@
 #include <random>
 
 #include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
 
 #include "calib/board_extrinsics.h"
 #include "calib/extrinsics.h"
@@ -282,8 +283,12 @@ TEST_CASE("real checkerboard images give the lab's focal length within 1%", "[ca
   REQUIRE(std::filesystem::exists(kDemo + "/calibration/intrinsics/int_cam2_img"));
   const Calibration lab = read_calibration_toml(kDemo + "/calibration/Calib_qualisys.toml");
   IntrinsicsReport rep;
+  testing::TempDir dir;
   const Camera cam = calibrate_intrinsics(kDemo + "/calibration/intrinsics/int_cam2_img",
-                                          parse_board("checkerboard:4x7:0.06"), &rep);
+                                          parse_board("checkerboard:4x7:0.06"), &rep, dir.file("fit.png"));
+  const cv::Mat overlay = cv::imread(dir.file("fit.png"));
+  REQUIRE(overlay.cols == 1088);
+  REQUIRE(overlay.rows == 1920);
   INFO("fx " << cam.K(0, 0) << " vs lab " << lab[1].K(0, 0) << ", RMS " << rep.rms_px << " px, used " << rep.used.size());
   CHECK(std::abs(cam.K(0, 0) / lab[1].K(0, 0) - 1) < 0.01);
   CHECK(std::abs(cam.K(1, 1) / lab[1].K(1, 1) - 1) < 0.01);

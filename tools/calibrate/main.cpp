@@ -28,7 +28,8 @@ void log_to_stderr(octocap_log_level_t level, const char* message, void*) {
   if (level >= OCTOCAP_LOG_INFO) std::fprintf(stderr, "  %s\n", message);
 }
 
-int run_intrinsics(const std::string& images, const std::string& board, const std::string& output) {
+int run_intrinsics(const std::string& images, const std::string& board, const std::string& output,
+                   const std::string& report_dir) {
   // One camera per sub-folder (sorted by name); a folder of images only is one camera.
   std::vector<fs::path> dirs;
   for (const auto& e : fs::directory_iterator(images))
@@ -43,7 +44,13 @@ int run_intrinsics(const std::string& images, const std::string& board, const st
     octocap_camera_t c{};
     float r = 0;
     uint32_t u = 0, x = 0;
-    if (octocap_calibration_solve_intrinsics(dirs[i].c_str(), board.c_str(), &c, &r, &u, &x) != OCTOCAP_OK)
+    std::string png;
+    if (!report_dir.empty()) {
+      fs::create_directories(report_dir);
+      png = (fs::path(report_dir) / (dirs[i].filename().string() + "_fit.png")).string();
+    }
+    if (octocap_calibration_solve_intrinsics(dirs[i].c_str(), board.c_str(), &c, &r, &u, &x,
+                                             png.empty() ? nullptr : png.c_str()) != OCTOCAP_OK)
       return fail(dirs[i].string());
     cams.push_back(c);
     rms.push_back(r);
@@ -144,6 +151,8 @@ int main(int argc, char** argv) {
   intr->add_option("--images", images, "Folder of images, or of one sub-folder per camera")->required()->check(CLI::ExistingDirectory);
   intr->add_option("--board", board, "checkerboard:COLSxROWS:SQUARE_M (inner corners)")->required();
   intr->add_option("--output", output, "Calibration TOML to write")->required();
+  std::string report_dir;
+  intr->add_option("--report", report_dir, "Folder for one PNG per camera: detected vs reprojected corners");
   CLI::App* extr = app.add_subcommand("extrinsics", "All camera poses from a person moving through the volume");
   extr->add_option("--calibration", in, "Calibration TOML with the cameras' intrinsics")->required()->check(CLI::ExistingFile);
   CLI::Option* kp = extr->add_option("--keypoints", keypoints, "One OpenPose JSON folder per camera (as `octocap solve` reads)")->check(CLI::ExistingDirectory);
@@ -160,7 +169,7 @@ int main(int argc, char** argv) {
   refine->add_option("--output", output, "Calibration TOML to write")->required();
   for (CLI::App* sub : {intr, extr, refine}) sub->add_option("--yaml", g_yaml, "Also write the calibration as OpenCV YAML");
   CLI11_PARSE(app, argc, argv);
-  if (intr->parsed()) return run_intrinsics(images, board, output);
+  if (intr->parsed()) return run_intrinsics(images, board, output, report_dir);
   if (extr->parsed() && keypoints.empty() && g_boards.empty()) {
     std::fprintf(stderr, "octocap-calibrate extrinsics: give --keypoints DIR (a person) or --boards DIR --board SPEC\n");
     return 2;

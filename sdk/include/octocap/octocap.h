@@ -560,10 +560,12 @@ OCTOCAP_API octocap_result_t octocap_recording_read_frame(octocap_recording_t* r
  * Intrinsics and distortion of one camera from a folder of checkerboard images. `board` is
  * "checkerboard:COLSxROWS:SQUARE_M" (inner corners, metres). Unreadable, blurred and partial views are
  * rejected (they are logged); at least 3 good views are needed. The camera's pose in `out` is identity.
+ * `overlay_png` (may be NULL): a PNG of the first good view with detected and reprojected corners drawn.
  */
 OCTOCAP_API octocap_result_t octocap_calibration_solve_intrinsics(const char* images_dir, const char* board,
                                                                   octocap_camera_t* out, float* rms_px,
-                                                                  uint32_t* images_used, uint32_t* images_rejected);
+                                                                  uint32_t* images_used, uint32_t* images_rejected,
+                                                                  const char* overlay_png);
 
 /** Options of octocap_calibration_solve_extrinsics(). Fill with octocap_extrinsics_options_init() first. */
 typedef struct octocap_extrinsics_options_t {

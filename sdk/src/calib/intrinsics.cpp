@@ -28,7 +28,8 @@ BoardSpec parse_board(const std::string& spec) {
   return b;
 }
 
-Camera calibrate_intrinsics(const std::string& directory, const BoardSpec& board, IntrinsicsReport* report) {
+Camera calibrate_intrinsics(const std::string& directory, const BoardSpec& board, IntrinsicsReport* report,
+                            const std::string& overlay_png) {
   std::error_code ec;
   if (!fs::is_directory(directory, ec)) throw Error(Errc::io, directory + ": not a directory");
   std::vector<std::string> files;
@@ -91,6 +92,19 @@ Camera calibrate_intrinsics(const std::string& directory, const BoardSpec& board
   cv::Mat K = cv::Mat::eye(3, 3, CV_64F), dist = cv::Mat::zeros(1, 5, CV_64F);
   std::vector<cv::Mat> rvecs, tvecs;
   rep.rms_px = cv::calibrateCamera(object, image, size, K, dist, rvecs, tvecs);
+  if (!overlay_png.empty()) {
+    cv::Mat canvas = cv::imread(rep.used.front(), cv::IMREAD_COLOR);
+    std::vector<cv::Point2f> reprojected;
+    cv::projectPoints(object.front(), rvecs.front(), tvecs.front(), K, dist, reprojected);
+    const int r = std::max(3, size.width / 200);
+    for (size_t i = 0; i < reprojected.size(); ++i) {
+      cv::circle(canvas, image.front()[i], 2 * r, cv::Scalar(0, 200, 0), std::max(1, r / 2));
+      cv::circle(canvas, reprojected[i], r / 2 + 1, cv::Scalar(0, 0, 255), cv::FILLED);
+    }
+    cv::putText(canvas, "detected (green) vs reprojected (red), RMS " + std::to_string(rep.rms_px) + " px",
+                cv::Point(10, 10 + 6 * r), cv::FONT_HERSHEY_SIMPLEX, r / 6.0, cv::Scalar(0, 0, 255), std::max(1, r / 3));
+    if (!cv::imwrite(overlay_png, canvas)) throw Error(Errc::io, overlay_png + ": cannot write the overlay PNG");
+  }
   Camera cam;
   cam.name = fs::path(directory).filename().string();
   cam.width = size.width;

@@ -21,6 +21,9 @@ struct IntrinsicsReport {
 
 // Every image file in `directory` (png, jpg, jpeg, bmp, tif). Images that are unreadable, blurred, or where
 // the whole board is not found are rejected with a reason; at least 3 good views are required.
-Camera calibrate_intrinsics(const std::string& directory, const BoardSpec& board, IntrinsicsReport* report);
+// With `overlay_png`, also writes the first good view with the detected corners (green rings) and the corners
+// reprojected through the result (red dots), so a person can see the fit.
+Camera calibrate_intrinsics(const std::string& directory, const BoardSpec& board, IntrinsicsReport* report,
+                            const std::string& overlay_png = "");
 
 }  // namespace octocap

@@ -14,13 +14,14 @@ using namespace octocap;
 extern "C" {
 
 octocap_result_t octocap_calibration_solve_intrinsics(const char* images_dir, const char* board, octocap_camera_t* out,
-                                                      float* rms_px, uint32_t* images_used, uint32_t* images_rejected) {
+                                                      float* rms_px, uint32_t* images_used, uint32_t* images_rejected,
+                                                      const char* overlay_png) {
   return capi::guard([&] {
     capi::require(images_dir, "images_dir");
     capi::require(board, "board");
     capi::require(out, "out");
     IntrinsicsReport rep;
-    const Camera cam = calibrate_intrinsics(images_dir, parse_board(board), &rep);
+    const Camera cam = calibrate_intrinsics(images_dir, parse_board(board), &rep, overlay_png ? overlay_png : "");
     capi::camera_to_c(cam, *out);
     if (rms_px) *rms_px = static_cast<float>(rep.rms_px);
     if (images_used) *images_used = static_cast<uint32_t>(rep.used.size());
