@@ -6,7 +6,7 @@ JOBS="${OCTOCAP_JOBS:-$(nproc)}"
 ensure_deps() {
   local missing=0
   for pkg in cmake ninja-build libeigen3-dev libtomlplusplus-dev nlohmann-json3-dev libcli11-dev \
-             libcatch2-dev libopencv-calib3d-dev libopencv-imgcodecs-dev libceres-dev assimp-testmodels python3-pip mono-devel \
+             libcatch2-dev libopencv-calib3d-dev libopencv-imgcodecs-dev libopencv-contrib-dev libceres-dev assimp-testmodels python3-pip mono-devel \
              nunit-console libnunit-cil-dev cyclonedds-dev cyclonedds-tools liblo-dev; do
     dpkg -s "$pkg" >/dev/null 2>&1 || { missing=1; break; }
   done

@@ -18,7 +18,8 @@ $SUDO apt-get install -y -q --no-install-recommends \
   build-essential cmake ninja-build pkg-config \
   libeigen3-dev \
   libtomlplusplus-dev nlohmann-json3-dev libcli11-dev \
-  libopencv-core-dev libopencv-calib3d-dev libopencv-imgproc-dev libopencv-imgcodecs-dev libceres-dev \
+  libopencv-core-dev libopencv-calib3d-dev libopencv-imgproc-dev libopencv-imgcodecs-dev libopencv-contrib-dev \
+  libceres-dev \
   assimp-testmodels python3 python3-pip \
   mono-devel nunit-console libnunit-cil-dev \
   cyclonedds-dev cyclonedds-tools liblo-dev

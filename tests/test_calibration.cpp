@@ -8,7 +8,9 @@
 #include <filesystem>
 #include <random>
 
+#include <opencv2/aruco/charuco.hpp>
 #include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include "calib/board_extrinsics.h"
@@ -266,7 +268,9 @@ TEST_CASE("OpenCV YAML export reads back in OpenCV", "[calib][formats]") {
 TEST_CASE("intrinsics: errors for bad boards, unreadable and too few images", "[calib]") {
   testing::TempDir dir;
   REQUIRE_THROWS_WITH(parse_board("checkerboard:9x6"), ContainsSubstring("COLSxROWS:SQUARE_M"));
-  REQUIRE_THROWS_AS(parse_board("charuco:5x7:0.04:0.03"), Error);
+  REQUIRE(parse_board("charuco:5x7:0.04:0.03").charuco);
+  REQUIRE_THROWS_WITH(parse_board("charuco:5x7:0.04:0.05"), ContainsSubstring("marker < square"));
+  REQUIRE_THROWS_WITH(parse_board("charuco:5x7:0.04:0.03:DICT_9X9_1"), ContainsSubstring("DICT_9X9_1"));
   REQUIRE_THROWS_WITH(calibrate_intrinsics(dir.file("none"), parse_board("checkerboard:9x6:0.025"), nullptr),
                       ContainsSubstring("not a directory"));
   dir.write("imgs/a.png", "not an image");
@@ -276,6 +280,46 @@ TEST_CASE("intrinsics: errors for bad boards, unreadable and too few images", "[
                       ContainsSubstring("at least 3"));
   REQUIRE(rep.rejected.size() == 2);
   REQUIRE_THAT(rep.rejected[0], ContainsSubstring("unreadable"));
+}
+
+TEST_CASE("ChArUco intrinsics from rendered views of a printed board recover the camera", "[calib]") {
+  // Print the board (OpenCV draws it), then photograph it with a known pinhole camera from several poses.
+  const BoardSpec spec = parse_board("charuco:7x5:0.04:0.03");
+  cv::Mat printed;
+  cv::aruco::CharucoBoard::create(7, 5, 0.04f, 0.03f, cv::aruco::getPredefinedDictionary(cv::aruco::DICT_6X6_250))
+      ->draw(cv::Size(1400, 1000), printed, 40, 1);
+  const double metres_per_px = 0.04 * 7 / (1400 - 80);  // drawn squares span the size minus margins
+  const double f = 900, cx = 650, cy = 470;
+  cv::Mat K = (cv::Mat_<double>(3, 3) << f, 0, cx, 0, f, cy, 0, 0, 1);
+  testing::TempDir dir;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int v = 0; v < 8; ++v) {
+    const Eigen::Matrix3d R = (Eigen::AngleAxisd(0.5 * u(rng), Eigen::Vector3d::UnitX()) *
+                               Eigen::AngleAxisd(0.5 * u(rng), Eigen::Vector3d::UnitY()) *
+                               Eigen::AngleAxisd(0.3 * u(rng), Eigen::Vector3d::UnitZ())).toRotationMatrix();
+    const Eigen::Vector3d centre(0.15 * u(rng), 0.1 * u(rng), 0.55 + 0.1 * u(rng));
+    // Board pixel (a, b) -> plane point ((a - w/2) s, (b - h/2) s, 0) -> camera.
+    cv::Mat H(3, 3, CV_64F);
+    Eigen::Matrix3d M;
+    M.col(0) = R.col(0) * metres_per_px;
+    M.col(1) = R.col(1) * metres_per_px;
+    M.col(2) = centre - R.col(0) * metres_per_px * printed.cols / 2 - R.col(1) * metres_per_px * printed.rows / 2;
+    for (int i = 0; i < 9; ++i) H.at<double>(i / 3, i % 3) = M(i / 3, i % 3);
+    cv::Mat photo;
+    cv::warpPerspective(printed, photo, K * H, cv::Size(1300, 940), cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar(90));
+    cv::imwrite(dir.file("view" + std::to_string(v) + ".png"), photo);
+  }
+  IntrinsicsReport rep;
+  const Camera cam = calibrate_intrinsics(dir.path().string(), spec, &rep, dir.file("fit.png"));
+  INFO("fx " << cam.K(0, 0) << " fy " << cam.K(1, 1) << " cx " << cam.K(0, 2) << " cy " << cam.K(1, 2) << ", RMS "
+             << rep.rms_px << ", used " << rep.used.size());
+  CHECK(std::abs(cam.K(0, 0) / f - 1) < 0.01);
+  CHECK(std::abs(cam.K(1, 1) / f - 1) < 0.01);
+  CHECK(std::abs(cam.K(0, 2) - cx) < 10);
+  CHECK(std::abs(cam.K(1, 2) - cy) < 10);
+  CHECK(rep.used.size() >= 6);
+  CHECK(std::filesystem::exists(dir.file("fit.png")));
 }
 
 TEST_CASE("real checkerboard images give the lab's focal length within 1%", "[calib][real]") {

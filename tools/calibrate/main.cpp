@@ -149,7 +149,7 @@ int main(int argc, char** argv) {
   double height = 0;
   CLI::App* intr = app.add_subcommand("intrinsics", "Intrinsics and distortion from checkerboard images");
   intr->add_option("--images", images, "Folder of images, or of one sub-folder per camera")->required()->check(CLI::ExistingDirectory);
-  intr->add_option("--board", board, "checkerboard:COLSxROWS:SQUARE_M (inner corners)")->required();
+  intr->add_option("--board", board, "checkerboard:COLSxROWS:SQUARE_M (inner corners) or charuco:COLSxROWS:SQUARE_M:MARKER_M[:DICT_6X6_250] (squares)")->required();
   intr->add_option("--output", output, "Calibration TOML to write")->required();
   std::string report_dir;
   intr->add_option("--report", report_dir, "Folder for one PNG per camera: detected vs reprojected corners");

@@ -557,9 +557,10 @@ OCTOCAP_API octocap_result_t octocap_recording_read_frame(octocap_recording_t* r
 /** @{ */
 
 /**
- * Intrinsics and distortion of one camera from a folder of checkerboard images. `board` is
- * "checkerboard:COLSxROWS:SQUARE_M" (inner corners, metres). Unreadable, blurred and partial views are
- * rejected (they are logged); at least 3 good views are needed. The camera's pose in `out` is identity.
+ * Intrinsics and distortion of one camera from a folder of board images. `board` is
+ * "checkerboard:COLSxROWS:SQUARE_M" (inner corners, metres) or "charuco:COLSxROWS:SQUARE_M:MARKER_M[:DICT]"
+ * (squares; dictionary DICT_6X6_250 unless named). Unreadable, blurred and partial views (for ChArUco: fewer
+ * than a third of the corners) are rejected and logged; at least 3 good views are needed. The camera's pose in `out` is identity.
  * `overlay_png` (may be NULL): a PNG of the first good view with detected and reprojected corners drawn.
  */
 OCTOCAP_API octocap_result_t octocap_calibration_solve_intrinsics(const char* images_dir, const char* board,

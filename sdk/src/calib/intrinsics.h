@@ -8,10 +8,14 @@
 namespace octocap {
 
 struct BoardSpec {
-  int cols = 0, rows = 0;   // inner corners
+  int cols = 0, rows = 0;   // checkerboard: inner corners; ChArUco: squares
   double square_m = 0;
+  bool charuco = false;
+  double marker_m = 0;      // ChArUco marker side
+  int dictionary = 10;      // ChArUco: cv::aruco predefined dictionary (10 = DICT_6X6_250)
 };
-// "checkerboard:COLSxROWS:SQUARE_M"; throws Error(invalid_argument) naming what is wrong.
+// "checkerboard:COLSxROWS:SQUARE_M" or "charuco:COLSxROWS:SQUARE_M:MARKER_M[:DICT_6X6_250]"; throws
+// Error(invalid_argument) naming what is wrong.
 BoardSpec parse_board(const std::string& spec);
 
 struct IntrinsicsReport {
