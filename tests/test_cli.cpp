@@ -8,6 +8,7 @@
 
 #include <Eigen/Geometry>
 
+#include "io/bvh.h"
 #include "io/calibration_toml.h"
 #include "io/motion_files.h"
 #include "support/temp_dir.h"
@@ -41,8 +42,9 @@ TEST_CASE("octocap solve on the sample: TRC, CSV and accuracy against its ground
   for (const char* method : {"subdivision", "triangulation"}) {
     INFO(method);
     const Run r = run("solve --calibration " + kSample + "/calibration.toml --keypoints " + kSample +
-                      "/keypoints --output " + dir.file("a.trc") + " --csv " + dir.file("a.csv") +
-                      " --ground-truth " + kSample + "/ground_truth.csv --method " + method + " --quiet");
+                      "/keypoints --output " + dir.file("a.trc") + " --csv " + dir.file("a.csv") + " --bvh " +
+                      dir.file("a.bvh") + " --ground-truth " + kSample + "/ground_truth.csv --method " + method +
+                      " --quiet");
     INFO(r.output);
     REQUIRE(r.status == 0);
     REQUIRE_THAT(r.output, ContainsSubstring("layout BODY_25"));
@@ -63,6 +65,9 @@ TEST_CASE("octocap solve on the sample: TRC, CSV and accuracy against its ground
     size_t rows = 0;
     for (std::string line; std::getline(csv, line);) ++rows;
     REQUIRE(rows == 90);
+    const octocap::BvhMotion bvh = octocap::read_bvh(dir.file("a.bvh"));
+    REQUIRE(bvh.frames.size() == 90);
+    REQUIRE(bvh.find("LeftForeArm") >= 0);
   }
 }
 

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   sc->add_option("--keypoints", solve.keypoints, "Folder with one OpenPose JSON sub-folder per camera")->required()->check(CLI::ExistingDirectory);
   sc->add_option("--output", solve.output, "Output TRC file")->required();
   sc->add_option("--csv", solve.csv, "Also write a CSV (calibration world frame)");
+  sc->add_option("--bvh", solve.bvh, "Also write the bone animation as BVH (Y up, centimetres)");
   sc->add_option("--method", solve.method, "3D method (auto: subdivision with 5+ cameras, else triangulation)")->check(CLI::IsMember({"auto", "subdivision", "triangulation"}))->capture_default_str();
   sc->add_option("--sigma", solve.sigma, "Views a cube must be supported by (0: cameras - 1)")->capture_default_str();
   sc->add_option("--delta-mm", solve.delta_mm, "Smallest cube edge, mm")->check(CLI::PositiveNumber)->capture_default_str();

@@ -107,8 +107,12 @@ int solve(const SolveOptions& o) {
   if (!o.csv.empty())
     check(octocap_motion_writer_create(o.csv.c_str(), OCTOCAP_MOTION_CSV, layout, up, o.rate_hz, &raw), "--csv");
   WriterPtr csv(raw);
+  raw = nullptr;
+  if (!o.bvh.empty())
+    check(octocap_motion_writer_create(o.bvh.c_str(), OCTOCAP_MOTION_BVH, layout, up, o.rate_hz, &raw), "--bvh");
+  WriterPtr bvh(raw);
   auto add_frame = [&](bool solved) {
-    for (octocap_motion_writer_t* w : {trc.get(), csv.get()}) {
+    for (octocap_motion_writer_t* w : {trc.get(), csv.get(), bvh.get()}) {
       if (!w) continue;
       check(solved ? octocap_motion_writer_add_frame(w, session.get()) : octocap_motion_writer_add_empty_frame(w),
             "writing a frame");
@@ -202,6 +206,7 @@ int solve(const SolveOptions& o) {
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   check(octocap_motion_writer_close(trc.release()), "writing the TRC");
   if (csv) check(octocap_motion_writer_close(csv.release()), "writing the CSV");
+  if (bvh) check(octocap_motion_writer_close(bvh.release()), "writing the BVH");
 
   const uint32_t done = frames > o.start_frame ? frames - o.start_frame : 0;  // frames this run solved
   double mean_err = 0;
@@ -232,7 +237,8 @@ int solve(const SolveOptions& o) {
     if (worst_k >= 0)
       std::printf("  worst keypoint:       %s, %.1f mm mean\n", octocap_layout_keypoint_name(layout, worst_k), worst);
   }
-  std::printf("  wrote %s%s%s\n", o.output.c_str(), o.csv.empty() ? "" : " and ", o.csv.c_str());
+  std::printf("  wrote %s%s%s%s%s\n", o.output.c_str(), o.csv.empty() ? "" : ", ", o.csv.c_str(),
+              o.bvh.empty() ? "" : ", ", o.bvh.c_str());
   return 0;
 }
 

@@ -2,7 +2,7 @@
 #include <string>
 
 struct SolveOptions {
-  std::string calibration, keypoints, output, csv, ground_truth;
+  std::string calibration, keypoints, output, csv, bvh, ground_truth;
   std::string method = "auto";
   std::string filter = "oneeuro";
   std::string layout = "auto";

@@ -635,7 +635,9 @@ typedef int32_t octocap_motion_format_t;
 /** Values of ::octocap_motion_format_t. */
 enum octocap_motion_format_values {
   OCTOCAP_MOTION_TRC = 0, /**< OpenSim TRC, Y up (Z-up worlds are turned as Pose2Sim does), metres. */
-  OCTOCAP_MOTION_CSV = 1  /**< `frame,NAME_x,NAME_y,NAME_z,...`, calibration world frame, empty cells when missing. */
+  OCTOCAP_MOTION_CSV = 1, /**< `frame,NAME_x,NAME_y,NAME_z,...`, calibration world frame, empty cells when missing. */
+  OCTOCAP_MOTION_BVH = 2  /**< The bone animation: one joint per bone (Mixamo-style names), median bone lengths,
+                               rig frame (Y up), centimetres. Frames come from octocap_motion_writer_add_frame(). */
 };
 
 /**

@@ -4,6 +4,7 @@
 
 #include "capi/boundary.h"
 #include "capi/handles.h"
+#include "rig/bvh_export.h"
 
 using namespace octocap;
 
@@ -99,7 +100,7 @@ octocap_result_t octocap_motion_writer_create(const char* path, octocap_motion_f
     capi::require(path, "path");
     capi::require(out, "out");
     *out = nullptr;
-    if (format != OCTOCAP_MOTION_TRC && format != OCTOCAP_MOTION_CSV)
+    if (format != OCTOCAP_MOTION_TRC && format != OCTOCAP_MOTION_CSV && format != OCTOCAP_MOTION_BVH)
       throw Error(Errc::invalid_argument, "unknown motion format");
     if (octocap_layout_keypoint_count(layout_id) == 0)
       throw Error(Errc::invalid_argument, "layout must be a concrete layout (not AUTO)");
@@ -108,7 +109,7 @@ octocap_result_t octocap_motion_writer_create(const char* path, octocap_motion_f
     for (const char* n : layout(static_cast<LayoutId>(layout_id)).keypoints) track.markers.emplace_back(n);
     track.rate_hz = rate_hz;
     *out = capi::make_handle<octocap_motion_writer_t>(std::string(path), format, up_axis == OCTOCAP_UP_Z,
-                                                      std::move(track));
+                                                      std::move(track), std::vector<SkeletonPose>{});
   });
 }
 
@@ -124,6 +125,7 @@ octocap_result_t octocap_motion_writer_add_frame(octocap_motion_writer_t* w, con
     for (const auto& k : session.keypoints())
       f.push_back(k.valid ? k.position : Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));
     w->track.frames.push_back(std::move(f));
+    w->poses.push_back(session.bones());
   });
 }
 
@@ -132,6 +134,8 @@ octocap_result_t octocap_motion_writer_add_keypoints(octocap_motion_writer_t* w,
   return capi::guard([&] {
     capi::checked(w, "motion writer");
     capi::require(keypoints, "keypoints");
+    if (w->format == OCTOCAP_MOTION_BVH)
+      throw Error(Errc::unsupported, "a BVH holds bone rotations: add frames from a session (octocap_motion_writer_add_frame)");
     if (count != w->track.markers.size())
       throw Error(Errc::invalid_argument, "got " + std::to_string(count) + " keypoints, the writer's layout has " +
                                               std::to_string(w->track.markers.size()));
@@ -150,6 +154,7 @@ octocap_result_t octocap_motion_writer_add_empty_frame(octocap_motion_writer_t* 
     capi::checked(w, "motion writer");
     w->track.frames.emplace_back(w->track.markers.size(),
                                  Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));
+    w->poses.emplace_back();  // all bones invalid: the BVH keeps the previous pose
   });
 }
 
@@ -159,6 +164,8 @@ octocap_result_t octocap_motion_writer_close(octocap_motion_writer_t* w) {
     capi::checked(w, "motion writer");
     if (w->format == OCTOCAP_MOTION_TRC)
       write_trc(w->path, w->track, w->z_up);
+    else if (w->format == OCTOCAP_MOTION_BVH)
+      write_bvh(w->path, w->poses, w->track.rate_hz);
     else
       write_csv(w->path, w->track);
   });

@@ -27,6 +27,7 @@ struct octocap_motion_writer_t {
   octocap_motion_format_t format = OCTOCAP_MOTION_TRC;
   bool z_up = false;
   octocap::MotionTrack track;
+  std::vector<octocap::SkeletonPose> poses;  // BVH
 };
 
 namespace octocap::capi {
