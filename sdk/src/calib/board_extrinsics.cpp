@@ -147,22 +147,9 @@ Calibration calibrate_extrinsics_from_boards(const Calibration& intrinsics, cons
     c.R = c.R * Q.transpose();
     c.t = scale * c.t;
   }
-  if (report) {
-    report->rms_px.assign(V, 0);
-    report->observations.assign(V, 0);
-    std::vector<double> sum(V, 0);
-    for (const auto& o : obs) {
-      const Eigen::Vector2d p = calib[o.camera].project(scale * Q * points[o.point]);
-      sum[o.camera] += (p - o.pixel).squaredNorm();
-      ++report->observations[o.camera];
-    }
-    for (int v = 0; v < V; ++v)
-      report->rms_px[v] = report->observations[v] ? std::sqrt(sum[v] / report->observations[v]) : 0;
-    report->points = points.size();
-    report->iterations = r.iterations;
-    report->initial_rms_px = r.initial_rms_px;
-    report->final_rms_px = r.final_rms_px;
-  }
+  std::vector<Eigen::Vector3d> world(points.size());
+  for (size_t p = 0; p < points.size(); ++p) world[p] = scale * Q * points[p];
+  fill_extrinsics_report(calib, world, obs, points.size(), r, r, report);
   return calib;
 }
 

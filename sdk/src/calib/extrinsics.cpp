@@ -152,26 +152,35 @@ Calibration refine_extrinsics(const Calibration& given, const std::vector<std::v
     c.R = c.R * R.transpose();
     c.t = s * c.t - c.R * t;
   }
-  if (report) {
-    report->rms_px.assign(V, 0);
-    report->observations.assign(V, 0);
-    std::vector<double> sum(V, 0);
-    for (const auto& o : inl) {
-      const Eigen::Vector2d p = calib[o.camera].project(s * R * points[o.point] + t);
-      sum[o.camera] += (p - o.pixel).squaredNorm();
-      ++report->observations[o.camera];
-    }
-    for (int v = 0; v < V; ++v)
-      report->rms_px[v] = report->observations[v] ? std::sqrt(sum[v] / report->observations[v]) : 0;
-    report->points = static_cast<size_t>(std::count(known.begin(), known.end(), true));
-    report->iterations = r1.iterations + r2.iterations;
-    report->initial_rms_px = r1.initial_rms_px;
-    report->final_rms_px = r2.final_rms_px;
-  }
+  std::vector<Eigen::Vector3d> world(points.size());
+  for (size_t p = 0; p < points.size(); ++p) world[p] = s * R * points[p] + t;
+  fill_extrinsics_report(calib, world, inl, static_cast<size_t>(std::count(known.begin(), known.end(), true)), r1, r2,
+                         report);
   return calib;
 }
 
 }  // namespace
+
+void fill_extrinsics_report(const Calibration& calib, const std::vector<Eigen::Vector3d>& world_points,
+                            const std::vector<BaObservation>& observations, size_t point_count,
+                            const BaResult& first_pass, const BaResult& last_pass, ExtrinsicsReport* report) {
+  if (!report) return;
+  const size_t V = calib.size();
+  report->rms_px.assign(V, 0);
+  report->observations.assign(V, 0);
+  std::vector<double> sum(V, 0);
+  for (const auto& o : observations) {
+    const Eigen::Vector2d p = calib[o.camera].project(world_points[o.point]);
+    sum[o.camera] += (p - o.pixel).squaredNorm();
+    ++report->observations[o.camera];
+  }
+  for (size_t v = 0; v < V; ++v)
+    report->rms_px[v] = report->observations[v] ? std::sqrt(sum[v] / report->observations[v]) : 0;
+  report->points = point_count;
+  report->iterations = first_pass.iterations + (&first_pass == &last_pass ? 0 : last_pass.iterations);
+  report->initial_rms_px = first_pass.initial_rms_px;
+  report->final_rms_px = last_pass.final_rms_px;
+}
 
 Calibration calibrate_extrinsics(const Calibration& intrinsics,
                                  const std::vector<std::vector<std::vector<Person2D>>>& frames, LayoutId layout_id,
@@ -450,23 +459,10 @@ Calibration calibrate_extrinsics(const Calibration& intrinsics,
     c.t = scale * (R0 * origin + t0);
   }
 
-  if (report) {
-    report->rms_px.assign(V, 0);
-    report->observations.assign(V, 0);
-    std::vector<double> sum(V, 0);
-    for (const auto& o : inl) {
-      const Eigen::Vector3d Xw = scale * Q * (points[o.point] - origin);
-      const Eigen::Vector2d p = calib[o.camera].project(Xw);
-      sum[o.camera] += (p - o.pixel).squaredNorm();
-      ++report->observations[o.camera];
-    }
-    for (int v = 0; v < V; ++v)
-      report->rms_px[v] = report->observations[v] ? std::sqrt(sum[v] / report->observations[v]) : 0;
-    report->points = static_cast<size_t>(std::count(known.begin(), known.end(), true));
-    report->iterations = r1.iterations + r2.iterations;
-    report->initial_rms_px = r1.initial_rms_px;
-    report->final_rms_px = r2.final_rms_px;
-  }
+  std::vector<Eigen::Vector3d> world(points.size());
+  for (size_t p = 0; p < points.size(); ++p) world[p] = scale * Q * (points[p] - origin);
+  fill_extrinsics_report(calib, world, inl, static_cast<size_t>(std::count(known.begin(), known.end(), true)), r1, r2,
+                         report);
   log(LogLevel::info, "extrinsics: bundle adjustment " + std::to_string(r1.initial_rms_px) + " -> " +
                           std::to_string(r2.final_rms_px) + " px RMS");
   return calib;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "calib/bundle_adjustment.h"
 #include "core/camera.h"
 #include "core/layout.h"
 #include "io/openpose_json.h"
@@ -31,6 +32,13 @@ struct ExtrinsicsReport {
   int iterations = 0;
   double initial_rms_px = 0, final_rms_px = 0;
 };
+
+// Fills `report` (when not null) from the fit: per-camera RMS and count of `observations` against
+// `world_points` (the points in the output world frame), and the bundle adjustment passes' figures (pass the
+// same BaResult twice for a single-pass fit).
+void fill_extrinsics_report(const Calibration& calib, const std::vector<Eigen::Vector3d>& world_points,
+                            const std::vector<BaObservation>& observations, size_t point_count,
+                            const BaResult& first_pass, const BaResult& last_pass, ExtrinsicsReport* report);
 
 // frames[f][view] = the people seen; the most prominent person per view is used. Intrinsics come from
 // `intrinsics` (its poses are ignored). Throws Error with a clear message on too few views, disconnected
