@@ -364,6 +364,23 @@ Calibration calibrate_extrinsics(const Calibration& intrinsics,
   const std::vector<BaObservation> inl = inlier_observations(calib, points, obs);
   BaResult r2 = bundle_adjust(calib, adjust, a, points, inl, 2.0, 100);
 
+  // A skeleton joint of frame f from the reconstructed keypoints, by the layout's definition.
+  auto joint = [&](size_t f, int j, Eigen::Vector3d& out) {
+    for (const auto& alt : lay.joint_sources[j]) {
+      Eigen::Vector3d s = Eigen::Vector3d::Zero();
+      bool all = true;
+      for (int k : alt) {
+        all = all && known[f * K + k];
+        if (all) s += points[f * K + k];
+      }
+      if (all) {
+        out = s / static_cast<double>(alt.size());
+        return true;
+      }
+    }
+    return false;
+  };
+
   // Scale.
   double scale = 1;
   if (by_distance) {
@@ -372,21 +389,6 @@ Calibration calibrate_extrinsics(const Calibration& intrinsics,
   } else {
     std::vector<double> paths;
     const size_t frames_used = by_point.size() / K;
-    auto joint = [&](size_t f, int j, Eigen::Vector3d& out) {
-      for (const auto& alt : lay.joint_sources[j]) {
-        Eigen::Vector3d s = Eigen::Vector3d::Zero();
-        bool all = true;
-        for (int k : alt) {
-          all = all && known[f * K + k];
-          if (all) s += points[f * K + k];
-        }
-        if (all) {
-          out = s / static_cast<double>(alt.size());
-          return true;
-        }
-      }
-      return false;
-    };
     for (size_t f = 0; f < frames_used; ++f) {
       Eigen::Vector3d J[kJointCount];
       bool ok = true;
@@ -407,20 +409,10 @@ Calibration calibrate_extrinsics(const Calibration& intrinsics,
   std::vector<Eigen::Vector3d> ankle_points;
   for (size_t f = 0; f < by_point.size() / K; ++f) {
     Eigen::Vector3d neck, la, ra;
-    auto get = [&](int j, Eigen::Vector3d& out) {
-      const auto& alt = lay.joint_sources[j].front();
-      Eigen::Vector3d s = Eigen::Vector3d::Zero();
-      for (int k : alt) {
-        if (!known[f * K + k]) return false;
-        s += points[f * K + k];
-      }
-      out = s / static_cast<double>(alt.size());
-      return true;
-    };
-    const bool has_l = get(kLFoot, la), has_r = get(kRFoot, ra);
+    const bool has_l = joint(f, kLFoot, la), has_r = joint(f, kRFoot, ra);
     if (has_l) ankle_points.push_back(la);
     if (has_r) ankle_points.push_back(ra);
-    if (has_l && has_r && get(kNeck, neck)) {
+    if (has_l && has_r && joint(f, kNeck, neck)) {
       up += (neck - 0.5 * (la + ra)).normalized();
       ++n_up;
     }
