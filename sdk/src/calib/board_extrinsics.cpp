@@ -10,6 +10,7 @@
 #include "calib/bundle_adjustment.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "io/directories.h"
 
 namespace fs = std::filesystem;
 
@@ -155,11 +156,7 @@ Calibration calibrate_extrinsics_from_boards(const Calibration& intrinsics, cons
 
 BoardViews detect_board_views(const std::string& directory, size_t cameras, const BoardSpec& board) {
   std::error_code ec;
-  if (!fs::is_directory(directory, ec)) throw Error(Errc::io, directory + ": not a directory");
-  std::vector<fs::path> dirs;
-  for (const auto& e : fs::directory_iterator(directory, ec))
-    if (e.is_directory()) dirs.push_back(e.path());
-  std::sort(dirs.begin(), dirs.end());
+  const std::vector<fs::path> dirs = sorted_subdirectories(directory);
   if (dirs.size() != cameras)
     throw Error(Errc::camera_mismatch, directory + " has " + std::to_string(dirs.size()) + " camera folders, the calibration " +
                                            std::to_string(cameras) + " cameras");

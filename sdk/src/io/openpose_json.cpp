@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "io/directories.h"
 
 namespace fs = std::filesystem;
 
@@ -82,11 +83,7 @@ std::vector<Person2D> read_openpose_file(const std::string& path, size_t keypoin
 
 OpenPoseRecording::OpenPoseRecording(const std::string& directory, LayoutId layout_id) : layout_(layout_id) {
   std::error_code ec;
-  if (!fs::is_directory(directory, ec)) throw Error(Errc::io, directory + ": not a directory");
-  std::vector<fs::path> dirs;
-  for (const auto& e : fs::directory_iterator(directory, ec))
-    if (e.is_directory()) dirs.push_back(e.path());
-  std::sort(dirs.begin(), dirs.end());
+  const std::vector<fs::path> dirs = sorted_subdirectories(directory);
   for (const auto& d : dirs) {
     std::vector<std::string> files;
     for (const auto& e : fs::directory_iterator(d, ec))

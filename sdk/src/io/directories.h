@@ -1,0 +1,13 @@
+// Folder listings shared by the readers that take "one sub-folder per camera".
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace octocap {
+
+// The sub-folders of `directory`, sorted by name (the order cameras are matched in). Throws Error(io) when
+// `directory` is not a folder.
+std::vector<std::filesystem::path> sorted_subdirectories(const std::string& directory);
+
+}  // namespace octocap
