@@ -6,10 +6,12 @@ JOBS="${OCTOCAP_JOBS:-$(nproc)}"
 ensure_deps() {
   local missing=0
   for pkg in cmake ninja-build libeigen3-dev libtomlplusplus-dev nlohmann-json3-dev libcli11-dev \
-             libcatch2-dev libopencv-calib3d-dev libopencv-imgcodecs-dev libopencv-contrib-dev libceres-dev assimp-testmodels python3-pip mono-devel \
+             libcatch2-dev libopencv-calib3d-dev libopencv-imgcodecs-dev libopencv-contrib-dev libopencv-videoio-dev libceres-dev assimp-testmodels python3-pip python3-venv mono-devel \
              nunit-console libnunit-cil-dev cyclonedds-dev cyclonedds-tools liblo-dev; do
     dpkg -s "$pkg" >/dev/null 2>&1 || { missing=1; break; }
   done
+  command -v npm >/dev/null 2>&1 || missing=1
+  [ -f "$ROOT/.cache/onnxruntime/.complete-1.32.0" ] || missing=1
   if [ "$missing" = 1 ]; then
     echo "== installing dependencies (scripts/install-deps.sh)" >&2
     bash "$ROOT/scripts/install-deps.sh"

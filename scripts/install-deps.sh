@@ -19,8 +19,15 @@ $SUDO apt-get install -y -q --no-install-recommends \
   libeigen3-dev \
   libtomlplusplus-dev nlohmann-json3-dev libcli11-dev \
   libopencv-core-dev libopencv-calib3d-dev libopencv-imgproc-dev libopencv-imgcodecs-dev libopencv-contrib-dev \
+  libopencv-videoio-dev \
   libceres-dev \
-  assimp-testmodels python3 python3-pip \
+  assimp-testmodels python3 python3-pip python3-venv \
   mono-devel nunit-console libnunit-cil-dev \
   cyclonedds-dev cyclonedds-tools liblo-dev
 $SUDO apt-get install -y -q --no-install-recommends -t bookworm-backports libcatch2-dev
+# Node.js + npm convert the shipped pose models (scripts/fetch-models.sh); keep a Node.js already installed.
+if ! command -v npm >/dev/null 2>&1; then
+  $SUDO apt-get install -y -q --no-install-recommends nodejs npm
+fi
+# ONNX Runtime is not packaged for Debian 12: library from PyPI, headers from Debian trixie (see the script).
+bash "$(dirname "$0")/fetch-onnxruntime.sh"

@@ -5,6 +5,8 @@ set -euo pipefail
 source "$(dirname "$0")/common.sh"
 ensure_deps
 bash "$ROOT/scripts/fetch-real-data.sh"
+bash "$ROOT/scripts/fetch-real-videos.sh"
+bash "$ROOT/scripts/fetch-models.sh"
 configure_and_build "$BUILD_DIR" "$@"
 status=0
 (cd "$BUILD_DIR" && ctest --output-on-failure -j "$JOBS") || status=$?

@@ -3,7 +3,21 @@
 #include <cstdio>
 
 #include "octocap/octocap.h"
+#include "detect_command.h"
 #include "solve_command.h"
+
+namespace {
+
+void add_detector_options(CLI::App* app, DetectorOptions& d) {
+  app->add_option("--model", d.model, "Pose model: a shipped name (movenet-thunder, movenet-lightning, movenet-multipose) or an .onnx with its card")->capture_default_str();
+  app->add_option("--detect-mode", d.mode, "per-view, mosaic (the paper's merged image) or crop (around the last pose)")->check(CLI::IsMember({"per-view", "mosaic", "crop"}))->capture_default_str();
+  app->add_option("--pick", d.pick, "People per view passed on: all, largest, most-confident, nearest")->check(CLI::IsMember({"all", "largest", "most-confident", "nearest"}))->capture_default_str();
+  app->add_option("--detect-threads", d.threads, "ONNX Runtime intra-op threads (0: all cores)")->capture_default_str();
+  app->add_option("--mosaic-tile", d.mosaic_tile, "Mosaic: tile height in pixels")->capture_default_str();
+  app->add_option("--max-people", d.max_people, "People kept per view")->check(CLI::Range(1, 64))->capture_default_str();
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"octocap: markerless multi-camera motion capture"};
@@ -13,7 +27,12 @@ int main(int argc, char** argv) {
   SolveOptions solve;
   CLI::App* sc = app.add_subcommand("solve", "Solve a recording of 2D keypoints (OpenPose JSON) into 3D (TRC/CSV)");
   sc->add_option("--calibration", solve.calibration, "Calibration TOML (anipose / Pose2Sim)")->required()->check(CLI::ExistingFile);
-  sc->add_option("--keypoints", solve.keypoints, "Folder with one OpenPose JSON sub-folder per camera")->required()->check(CLI::ExistingDirectory);
+  auto* kp = sc->add_option("--keypoints", solve.keypoints, "Folder with one OpenPose JSON sub-folder per camera")->check(CLI::ExistingDirectory);
+  auto* im = sc->add_option("--images", solve.images, "Folder with one video or picture sub-folder per camera (calibration order): detect 2D keypoints first")->check(CLI::ExistingDirectory);
+  kp->excludes(im);
+  sc->add_option("--frames", solve.max_frames, "Solve at most this many frames (0: all)")->capture_default_str();
+  sc->add_option("--debug-images", solve.debug_images, "With --images: write each view with detections and reprojected 3D keypoints as PNG");
+  add_detector_options(sc, solve.detector);
   sc->add_option("--output", solve.output, "Output TRC file")->required();
   sc->add_option("--csv", solve.csv, "Also write a CSV (calibration world frame)");
   sc->add_option("--bvh", solve.bvh, "Also write the bone animation as BVH (Y up, centimetres)");
@@ -40,10 +59,24 @@ int main(int argc, char** argv) {
   sc->add_option("--vmc-host", solve.vmc_host, "VMC receiver host")->capture_default_str();
   sc->add_option("--linger-s", solve.linger_s, "With --publish: stay on the network this long after the last frame")->capture_default_str();
 
+  DetectOptions detect;
+  CLI::App* dc = app.add_subcommand("detect", "Detect 2D keypoints in camera images or videos and write OpenPose JSON");
+  dc->add_option("--images", detect.images, "Folder with one video or picture sub-folder per camera")->required()->check(CLI::ExistingDirectory);
+  dc->add_option("--output", detect.output, "Folder for the OpenPose JSON (one <camera>_json sub-folder per camera)")->required();
+  dc->add_option("--frames", detect.max_frames, "Detect at most this many frames (0: all)")->capture_default_str();
+  dc->add_option("--debug-images", detect.debug_images, "Write each view with its detections drawn as PNG");
+  dc->add_flag("--quiet", detect.quiet, "No progress on stderr");
+  add_detector_options(dc, detect.detector);
+
   CLI::App* lc = app.add_subcommand("layouts", "List the keypoint layouts and their keypoints");
 
   CLI11_PARSE(app, argc, argv);
   if (sc->parsed()) return run_solve(solve);
+  if (sc->parsed() && solve.keypoints.empty() && solve.images.empty()) {
+    std::fprintf(stderr, "octocap solve: give --keypoints or --images\n");
+    return 2;
+  }
+  if (dc->parsed()) return run_detect(detect);
   if (lc->parsed()) return run_layouts();
   return 0;
 }

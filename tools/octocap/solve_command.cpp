@@ -4,12 +4,17 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <stdexcept>
 #include <thread>
 #include <vector>
 
+#include <opencv2/imgcodecs.hpp>
+
+#include "debug_draw.h"
 #include "ground_truth.h"
+#include "image_source.h"
 #include "octocap/octocap.h"
 
 namespace {
@@ -49,6 +54,32 @@ void log_to_stderr(octocap_log_level_t level, const char* message, void*) {
   std::fprintf(stderr, "octocap %s: %s\n", names[level], message);
 }
 
+// Each view with what the detector found and where the solved 3D keypoints reproject.
+void write_debug_images(octocap_session_t* session, const octocap_calibration_t* calib, std::vector<cv::Mat>& images,
+                        octocap_layout_t layout, uint32_t K, bool solved, const std::string& dir, uint32_t frame) {
+  std::vector<octocap_joint_t> joints(K);
+  uint32_t count = 0;
+  if (solved) check(octocap_session_get_keypoints3d(session, joints.data(), K, &count), "keypoints");
+  for (uint32_t v = 0; v < images.size(); ++v) {
+    uint32_t n = 0;
+    check(octocap_session_detections(session, v, nullptr, 0, &n), "detections");
+    std::vector<octocap_keypoint2d_t> people(n);
+    if (n) check(octocap_session_detections(session, v, people.data(), n, &n), "detections");
+    draw_detections(images[v], people, K, layout, 0.3f);
+    std::vector<cv::Point2d> reprojected;
+    for (uint32_t k = 0; solved && k < K; ++k) {
+      if (!joints[k].valid) continue;
+      const double world[3] = {joints[k].position[0], joints[k].position[1], joints[k].position[2]};
+      double px[2];
+      if (octocap_calibration_project(calib, v, world, px) == OCTOCAP_OK) reprojected.emplace_back(px[0], px[1]);
+    }
+    draw_reprojection(images[v], reprojected);
+    octocap_camera_t cam;
+    check(octocap_calibration_get_camera(calib, v, &cam), "camera");
+    cv::imwrite(debug_image_path(dir, cam.name, frame), images[v]);
+  }
+}
+
 int solve(const SolveOptions& o) {
   octocap_set_log_callback(log_to_stderr, OCTOCAP_LOG_WARNING, nullptr);
   octocap_calibration_t* calib_raw = nullptr;
@@ -59,15 +90,26 @@ int solve(const SolveOptions& o) {
 
   octocap_layout_t layout = OCTOCAP_LAYOUT_AUTO;
   if (o.layout != "auto") check(octocap_layout_from_name(o.layout.c_str(), &layout), "--layout");
-  octocap_recording_t* rec_raw = nullptr;
-  check(octocap_recording_open(o.keypoints.c_str(), layout, &rec_raw), "opening the keypoints");
-  RecordingPtr rec(rec_raw);
+  RecordingPtr rec;
+  std::unique_ptr<ImageSource> source;
   uint32_t views = 0, frames = 0;
-  check(octocap_recording_view_count(rec.get(), &views), "view count");
-  check(octocap_recording_frame_count(rec.get(), &frames), "frame count");
-  check(octocap_recording_layout(rec.get(), &layout), "layout");
+  if (!o.images.empty()) {
+    source = std::make_unique<ImageSource>(o.images);
+    views = static_cast<uint32_t>(source->camera_count());
+    frames = static_cast<uint32_t>(source->frame_count());
+    if (layout == OCTOCAP_LAYOUT_AUTO) layout = OCTOCAP_LAYOUT_COCO_17;  // the shipped models' layout
+  } else {
+    octocap_recording_t* rec_raw = nullptr;
+    check(octocap_recording_open(o.keypoints.c_str(), layout, &rec_raw), "opening the keypoints");
+    rec.reset(rec_raw);
+    check(octocap_recording_view_count(rec.get(), &views), "view count");
+    check(octocap_recording_frame_count(rec.get(), &frames), "frame count");
+    check(octocap_recording_layout(rec.get(), &layout), "layout");
+  }
+  if (o.max_frames) frames = std::min(frames, o.start_frame + o.max_frames);
+  const std::string input = o.images.empty() ? o.keypoints : o.images;
   if (views != cameras)
-    throw std::runtime_error(o.keypoints + " has " + std::to_string(views) + " camera folders, " + o.calibration +
+    throw std::runtime_error(input + " has " + std::to_string(views) + " cameras, " + o.calibration +
                              " has " + std::to_string(cameras) + " cameras");
 
   octocap_session_config_t cfg;
@@ -91,6 +133,8 @@ int solve(const SolveOptions& o) {
     cfg.stream_source_id = o.source_id;
     std::snprintf(cfg.stream_topic, sizeof cfg.stream_topic, "%s", o.topic.c_str());
   }
+  cfg.detector = o.detector.config();
+  if (!o.debug_images.empty()) std::filesystem::create_directories(o.debug_images);
   octocap_session_t* session_raw = nullptr;
   check(octocap_session_create(&cfg, calib.get(), &session_raw), "creating the session");
   SessionPtr session(session_raw);
@@ -134,7 +178,8 @@ int solve(const SolveOptions& o) {
   std::vector<octocap_joint_t> joints(K);
   std::vector<double> errors;
   size_t solved_keypoints = 0, frames_with_result = 0, frames_multi = 0;
-  double solve_ms = 0;
+  double solve_ms = 0, detect_ms = 0;
+  std::string detect_model;
   Accuracy acc;
   acc.per_keypoint_sum.assign(K, 0);
   acc.per_keypoint_n.assign(K, 0);
@@ -155,17 +200,41 @@ int solve(const SolveOptions& o) {
       const auto due = start + std::chrono::microseconds(static_cast<int64_t>((f - o.start_frame) * 1e6 / o.rate_hz));
       std::this_thread::sleep_until(due);
     }
-    uint32_t needed = 0;
-    octocap_result_t r = octocap_recording_read_frame(rec.get(), f, buffer.data(), static_cast<uint32_t>(buffer.size()),
-                                                      &needed, people.data(), views);
-    if (r == OCTOCAP_ERROR_BUFFER_TOO_SMALL) {
-      buffer.resize(needed);
-      r = octocap_recording_read_frame(rec.get(), f, buffer.data(), needed, &needed, people.data(), views);
-    }
-    check(r, "reading a frame");
-    if (std::any_of(people.begin(), people.end(), [](uint32_t n) { return n > 1; })) ++frames_multi;
     const int64_t t_us = static_cast<int64_t>(std::llround(f * 1e6 / o.rate_hz));
-    r = octocap_session_solve_keypoints(session.get(), buffer.data(), people.data(), views, t_us);
+    octocap_result_t r = OCTOCAP_OK;
+    std::vector<cv::Mat> images;
+    if (source) {
+      images = source->read(f);
+      std::vector<octocap_image_t> views_c;
+      for (const cv::Mat& m : images) views_c.push_back(as_image(m));
+      r = octocap_session_solve_images(session.get(), views_c.data(), views, t_us);
+      if (r != OCTOCAP_OK && r != OCTOCAP_ERROR_NOT_ENOUGH_VIEWS) check(r, "solving a frame from images");
+      octocap_detect_info_t dinfo{};
+      dinfo.struct_size = sizeof dinfo;
+      check(octocap_session_detect_info(session.get(), &dinfo), "detect info");
+      detect_ms += dinfo.total_ms;
+      detect_model = dinfo.model;
+      bool several = false;
+      for (uint32_t v = 0; v < views; ++v) {
+        uint32_t n = 0;
+        check(octocap_session_detections(session.get(), v, nullptr, 0, &n), "detections");
+        several = several || n > K;
+      }
+      frames_multi += several;
+    } else {
+      uint32_t needed = 0;
+      r = octocap_recording_read_frame(rec.get(), f, buffer.data(), static_cast<uint32_t>(buffer.size()), &needed,
+                                       people.data(), views);
+      if (r == OCTOCAP_ERROR_BUFFER_TOO_SMALL) {
+        buffer.resize(needed);
+        r = octocap_recording_read_frame(rec.get(), f, buffer.data(), needed, &needed, people.data(), views);
+      }
+      check(r, "reading a frame");
+      if (std::any_of(people.begin(), people.end(), [](uint32_t n) { return n > 1; })) ++frames_multi;
+      r = octocap_session_solve_keypoints(session.get(), buffer.data(), people.data(), views, t_us);
+    }
+    if (!o.debug_images.empty() && source)
+      write_debug_images(session.get(), calib.get(), images, layout, K, r == OCTOCAP_OK, o.debug_images, f);
     octocap_frame_info_t info;
     check(octocap_session_get_frame_info(session.get(), &info), "frame info");
     solve_ms += info.solve_ms;
@@ -224,6 +293,10 @@ int solve(const SolveOptions& o) {
               done ? solve_ms / done : 0.0, done ? total_ms / done : 0.0,
               total_ms > 0 ? done * 1000.0 / total_ms : 0.0,
               o.publish || o.vmc_port ? " (paced at --rate for streaming)" : "");
+  if (source)
+    std::printf("  2D detection:         %.1f ms/frame, model %s, mode %s (ONNX Runtime %s)\n",
+                done ? detect_ms / done : 0.0, detect_model.c_str(), o.detector.mode.c_str(),
+                octocap_onnxruntime_version());
   if (!o.ground_truth.empty()) {
     std::printf("  accuracy vs %s: MPJPE %.1f mm over %zu keypoint observations\n", o.ground_truth.c_str(),
                 acc.count ? acc.sum_mm / acc.count : NAN, acc.count);

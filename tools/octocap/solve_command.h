@@ -1,8 +1,13 @@
 #pragma once
 #include <string>
 
+#include "detect_command.h"
+
 struct SolveOptions {
   std::string calibration, keypoints, output, csv, bvh, ground_truth;
+  std::string images, debug_images;  // --images: detect first (the detector options below)
+  unsigned max_frames = 0;
+  DetectorOptions detector;
   std::string method = "auto";
   std::string filter = "oneeuro";
   std::string layout = "auto";

@@ -277,6 +277,115 @@ enum octocap_stream_qos_t_values {
                                `depth` poses (recorders). */
 };
 
+/* ---------------------------------------------------------------------------------------------------------
+ * 2D detection (ONNX Runtime)
+ * ------------------------------------------------------------------------------------------------------- */
+
+/** One 2D keypoint in pixels. confidence <= 0 (or x, y = 0, 0 as OpenPose writes it) means "not detected". */
+typedef struct octocap_keypoint2d_t {
+  float x;
+  float y;
+  float confidence;
+} octocap_keypoint2d_t;
+
+/** Longest path a config holds, including the terminating NUL. */
+#define OCTOCAP_PATH_CAPACITY 512
+
+/** Pixel layout of a camera image. */
+typedef int32_t octocap_pixel_format_t;
+/** Values of ::octocap_pixel_format_t. */
+enum octocap_pixel_format_values {
+  OCTOCAP_PIXELS_RGB8 = 0,  /**< 3 bytes per pixel, R G B (most decoders, Unity's RGB24). */
+  OCTOCAP_PIXELS_BGR8 = 1,  /**< 3 bytes per pixel, B G R (OpenCV). */
+  OCTOCAP_PIXELS_RGBA8 = 2  /**< 4 bytes per pixel, R G B A (Unity's RGBA32, Godot's FORMAT_RGBA8); alpha ignored. */
+};
+
+/** One camera image, borrowed for the duration of the call (never copied beyond it). */
+typedef struct octocap_image_t {
+  const uint8_t* pixels;          /**< Top row first. */
+  uint32_t width;                 /**< Pixels. */
+  uint32_t height;                /**< Pixels. */
+  uint32_t stride_bytes;          /**< Bytes from one row to the next (>= width * bytes per pixel). */
+  octocap_pixel_format_t format;  /**< See ::octocap_pixel_format_values. */
+} octocap_image_t;
+
+/** How N views are given to the network. */
+typedef int32_t octocap_detect_mode_t;
+/** Values of ::octocap_detect_mode_t (README "Detecting" has the measured trade-off). */
+enum octocap_detect_mode_values {
+  OCTOCAP_DETECT_PER_VIEW = 0, /**< One inference per view on the whole view, letterboxed. */
+  OCTOCAP_DETECT_MOSAIC = 1,   /**< The paper's merged image: every view down-sampled into one tile, one inference
+                                    (needs a multi-person model, default movenet-multipose). */
+  OCTOCAP_DETECT_CROP = 2      /**< One inference per view on a crop around where the person was last frame (the
+                                    last 3D joints reprojected), found on the whole view first. Most accurate. */
+};
+
+/** Which people found in one view go on to the 3D solve. */
+typedef int32_t octocap_person_pick_t;
+/** Values of ::octocap_person_pick_t. */
+enum octocap_person_pick_values {
+  OCTOCAP_PICK_ALL = 0,             /**< Up to max_people, best score first; the session picks across views. */
+  OCTOCAP_PICK_LARGEST = 1,         /**< The person with the biggest box. */
+  OCTOCAP_PICK_MOST_CONFIDENT = 2,  /**< The person the model is surest of. */
+  OCTOCAP_PICK_NEAREST_PREVIOUS = 3 /**< Closest to last frame's reprojected joints (else most confident). */
+};
+
+/** Detector configuration. Fill with octocap_detector_config_init() first. */
+typedef struct octocap_detector_config_t {
+  uint32_t struct_size;            /**< sizeof(octocap_detector_config_t). */
+  char model[OCTOCAP_PATH_CAPACITY]; /**< A .onnx path (its model card, same name with .json, beside it) or the name
+                                        of a shipped model ("movenet-thunder", "movenet-lightning",
+                                        "movenet-multipose") looked up in $OCTOCAP_MODELS_DIR, else the build's
+                                        models directory. Empty (default): movenet-thunder, or movenet-multipose
+                                        for the mosaic. */
+  octocap_detect_mode_t mode;      /**< Default ::OCTOCAP_DETECT_PER_VIEW. */
+  octocap_person_pick_t person_pick; /**< Default ::OCTOCAP_PICK_ALL. */
+  uint32_t threads;                /**< ONNX Runtime intra-op threads; 0 = all cores. Default 0. */
+  uint32_t mosaic_tile_px;         /**< Mosaic: height of each view's tile (the width follows the views' aspect). Default 256. */
+  uint32_t max_people;             /**< People kept per view with ::OCTOCAP_PICK_ALL. Default 4. */
+  float min_confidence;            /**< Keypoints below it do not place a person in a mosaic tile or a crop. Default 0.3. */
+} octocap_detector_config_t;
+
+/** Fills `cfg` with defaults and sets its struct_size. */
+OCTOCAP_API void octocap_detector_config_init(octocap_detector_config_t* cfg);
+
+/** Figures of the last detection. */
+typedef struct octocap_detect_info_t {
+  uint32_t struct_size;       /**< Set by the caller to sizeof(octocap_detect_info_t). */
+  float total_ms;             /**< Whole detection of the frame (all views). */
+  float preprocess_ms;        /**< Resizing, letterboxing, tiling. */
+  float inference_ms;         /**< Inside ONNX Runtime. */
+  uint32_t inferences;        /**< Network runs for the frame (1 for the mosaic, N per view, up to 2N for crops). */
+  octocap_layout_t layout;    /**< The model's keypoint layout. */
+  uint32_t keypoint_count;    /**< Keypoints per person. */
+  char model[OCTOCAP_NAME_CAPACITY]; /**< The model card's name. */
+} octocap_detect_info_t;
+
+/** A 2D detector on its own (no calibration): what `octocap detect` uses to write OpenPose JSON. */
+typedef struct octocap_detector_t octocap_detector_t;
+
+/** Loads the model. Fails with OCTOCAP_ERROR_IO (missing model or card), OCTOCAP_ERROR_PARSE (malformed card or
+ *  model), OCTOCAP_ERROR_INVALID_ARGUMENT (a model whose inputs or outputs do not fit its card, or a mosaic with a
+ *  single-person model), OCTOCAP_ERROR_UNSUPPORTED (a build without ONNX Runtime, or a library older than the
+ *  headers octocap was built with). */
+OCTOCAP_API octocap_result_t octocap_detector_create(const octocap_detector_config_t* cfg, octocap_detector_t** out);
+/** Destroys a detector; NULL is accepted. */
+OCTOCAP_API void octocap_detector_destroy(octocap_detector_t* detector);
+/** Detects people in `count` images (views of one instant, or unrelated pictures). */
+OCTOCAP_API octocap_result_t octocap_detector_run(octocap_detector_t* detector, const octocap_image_t* images,
+                                                  uint32_t count);
+/** People found in image `view` by the last run, best first. */
+OCTOCAP_API octocap_result_t octocap_detector_people(const octocap_detector_t* detector, uint32_t view,
+                                                     uint32_t* count);
+/** Keypoints (image pixels, the model's layout) of one person of the last run. */
+OCTOCAP_API octocap_result_t octocap_detector_keypoints(const octocap_detector_t* detector, uint32_t view,
+                                                        uint32_t person, octocap_keypoint2d_t* out,
+                                                        uint32_t capacity, uint32_t* count);
+/** Figures of the last run (model, layout, timings). */
+OCTOCAP_API octocap_result_t octocap_detector_info(const octocap_detector_t* detector, octocap_detect_info_t* out);
+/** Version of the ONNX Runtime library in use ("1.32.0"), or "" when this build has none. */
+OCTOCAP_API const char* octocap_onnxruntime_version(void);
+
 /** Up axis of the calibration's world frame. */
 typedef int32_t octocap_up_axis_t;
 /** Values of ::octocap_up_axis_t. */
@@ -316,6 +425,10 @@ typedef struct octocap_session_config_t {
   uint32_t vmc_port;             /**< Non-zero: also send every frame as VMC protocol (OSC/UDP) to this port;
                                       VMC's usual port is ::OCTOCAP_VMC_DEFAULT_PORT. Default 0 (off). */
   char vmc_host[64];             /**< Receiver of the VMC output. Default "127.0.0.1". */
+  /* Added in 0.3. */
+  octocap_detector_config_t detector; /**< 2D detection for octocap_session_solve_images(); the model is loaded on
+                                           the first such call and must give the session's layout (COCO_17 for the
+                                           shipped models). */
 } octocap_session_config_t;
 
 /** Fills `cfg` with defaults and sets its struct_size. */
@@ -330,13 +443,6 @@ OCTOCAP_API octocap_result_t octocap_session_create(const octocap_session_config
                                                     octocap_session_t** out);
 /** Destroys a session; NULL is accepted. */
 OCTOCAP_API void octocap_session_destroy(octocap_session_t* session);
-
-/** One 2D keypoint in pixels. confidence <= 0 (or x, y = 0, 0 as OpenPose writes it) means "not detected". */
-typedef struct octocap_keypoint2d_t {
-  float x;
-  float y;
-  float confidence;
-} octocap_keypoint2d_t;
 
 /**
  * Solves one frame from 2D keypoints.
@@ -356,6 +462,28 @@ OCTOCAP_API octocap_result_t octocap_session_solve_keypoints(octocap_session_t* 
                                                              const octocap_keypoint2d_t* keypoints,
                                                              const uint32_t* people_per_view,
                                                              uint32_t view_count, int64_t timestamp_us);
+
+/**
+ * Solves one frame from camera images: 2D detection (the config's detector), then the same solve as
+ * octocap_session_solve_keypoints().
+ *
+ * @param images     view_count images in calibration order, any sizes (each is mapped back to its own pixels;
+ *                   they should be the sizes the calibration was made at).
+ * @return As octocap_session_solve_keypoints(); also OCTOCAP_ERROR_INVALID_ARGUMENT for a bad image (NULL pixels,
+ *         zero size, short stride, unknown format) or a model whose layout differs from the session's, and the
+ *         detector's errors (see octocap_detector_create()) on the first call.
+ */
+OCTOCAP_API octocap_result_t octocap_session_solve_images(octocap_session_t* session, const octocap_image_t* images,
+                                                          uint32_t view_count, int64_t timestamp_us);
+
+/** The 2D keypoints the detector found in `view` during the last octocap_session_solve_images(): every person kept
+ *  (keypoint_count each, the session's layout) one after the other; `count` = people x keypoints. Engines draw
+ *  them over the camera image. */
+OCTOCAP_API octocap_result_t octocap_session_detections(const octocap_session_t* session, uint32_t view,
+                                                        octocap_keypoint2d_t* out, uint32_t capacity, uint32_t* count);
+
+/** Figures of the last octocap_session_solve_images() detection. */
+OCTOCAP_API octocap_result_t octocap_session_detect_info(const octocap_session_t* session, octocap_detect_info_t* out);
 
 /** The 3D method in use (AUTO resolved at creation). */
 OCTOCAP_API octocap_result_t octocap_session_method(const octocap_session_t* session, octocap_method_t* out);

@@ -6,17 +6,6 @@
 namespace octocap::capi {
 namespace {
 
-// Two-call pattern: out == NULL asks for the count; a short buffer is an error that still reports it.
-template <class Fill>
-void fill_array(uint32_t needed, const void* out, uint32_t capacity, uint32_t* count, Fill&& fill) {
-  require(count, "count");
-  *count = needed;
-  if (!out) return;
-  if (capacity < needed)
-    throw Error(Errc::buffer_too_small, "capacity " + std::to_string(capacity) + " < " + std::to_string(needed));
-  fill();
-}
-
 CoordFrame frame_of(octocap_coord_frame_t f) {
   if (f != OCTOCAP_FRAME_RIG && f != OCTOCAP_FRAME_UNITY && f != OCTOCAP_FRAME_GODOT)
     throw Error(Errc::invalid_argument, "unknown coordinate frame " + std::to_string(f));

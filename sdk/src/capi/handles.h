@@ -8,6 +8,7 @@
 #include "io/openpose_json.h"
 #include "octocap/octocap.h"
 #include "pipeline/session.h"
+#include "detect/detector.h"
 
 struct octocap_calibration_t {
   octocap::Calibration cameras;
@@ -16,6 +17,12 @@ struct octocap_calibration_t {
 struct octocap_session_t {
   std::unique_ptr<octocap::Session> session;
   uint32_t definition_counter = 1;
+};
+
+struct octocap_detector_t {
+  explicit octocap_detector_t(std::unique_ptr<octocap::Detector> d) : detector(std::move(d)) {}
+  std::unique_ptr<octocap::Detector> detector;
+  std::vector<std::vector<octocap::DetectedPerson>> people;  // last run, image pixels
 };
 
 struct octocap_recording_t {

@@ -8,6 +8,7 @@
 #include "capi/handles.h"
 #include "capi/frame_queries.h"
 #include "capi/stream_c.h"
+#include "capi/detect_c.h"
 
 using namespace octocap;
 
@@ -17,6 +18,11 @@ namespace {
 constexpr size_t kConfigV1Size = offsetof(octocap_session_config_t, first_frame_index);
 
 SessionConfig from_c(const octocap_session_config_t& given) {
+  // A struct_size that cuts the nested detector config in two is no version of this struct.
+  const size_t detector_at = offsetof(octocap_session_config_t, detector);
+  if (given.struct_size > detector_at && given.struct_size < sizeof(octocap_session_config_t))
+    throw Error(Errc::struct_size, "octocap_session_config_t.struct_size " + std::to_string(given.struct_size) +
+                                       " ends inside the detector config (call octocap_session_config_init first)");
   if (given.struct_size < kConfigV1Size || given.struct_size > sizeof(octocap_session_config_t))
     throw Error(Errc::struct_size, "octocap_session_config_t.struct_size is " + std::to_string(given.struct_size) +
                                        ", this library accepts " + std::to_string(kConfigV1Size) + " to " +
@@ -76,6 +82,7 @@ SessionConfig from_c(const octocap_session_config_t& given) {
   if (s.vmc_port && (host_len == 0 || host_len == sizeof c.vmc_host))
     throw Error(Errc::invalid_argument, "config.vmc_host must be a NUL-terminated host name");
   s.vmc_host.assign(c.vmc_host, host_len);
+  s.detector = capi::detector_config(c.detector);
   return s;
 }
 
@@ -116,6 +123,7 @@ void octocap_session_config_init(octocap_session_config_t* c) {
   capi::copy_name(c->stream_topic, sizeof c->stream_topic, "octocap");
   c->vmc_port = 0;
   capi::copy_name(c->vmc_host, sizeof c->vmc_host, "127.0.0.1");
+  octocap_detector_config_init(&c->detector);
 }
 
 octocap_result_t octocap_session_create(const octocap_session_config_t* cfg, const octocap_calibration_t* calib,

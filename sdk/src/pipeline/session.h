@@ -9,6 +9,7 @@
 #include "core/camera.h"
 #include "core/layout.h"
 #include "core/parallel.h"
+#include "detect/detector.h"
 #include "pipeline/frame_result.h"
 #include "stream/stream_config.h"
 #include "io/openpose_json.h"
@@ -42,6 +43,7 @@ struct SessionConfig {
   StreamConfig stream;
   uint16_t vmc_port = 0;          // 0: no VMC output
   std::string vmc_host = "127.0.0.1";
+  DetectorConfig detector;        // for solve_images(); the model is loaded on first use
 };
 
 class DdsPublisher;
@@ -56,6 +58,12 @@ class Session {
   // people[view][person]; throws Error(camera_mismatch / invalid_argument / not_enough_views). After
   // not_enough_views the frame is empty (all missing) and the session stays usable.
   void solve(const std::vector<std::vector<Person2D>>& people, int64_t timestamp_us);
+  // Detects people in one image per camera (calibration order), then solve(). Throws as solve() does, and
+  // Error(invalid_argument) for bad images or a model whose layout is not the session's. (session_images.cpp)
+  void solve_images(const std::vector<ImageView>& images, int64_t timestamp_us);
+  // What the detector found in each view during the last solve_images(), view pixels.
+  const std::vector<std::vector<DetectedPerson>>& detections() const { return detections_; }
+  const Detector* detector() const { return detector_.get(); }
   void reset();
   // Blocks until every published frame has been handed to DDS (no-op without publishing).
   void flush_stream();
@@ -94,6 +102,10 @@ class Session {
   std::unique_ptr<DdsPublisher> publisher_;
   std::unique_ptr<VmcSender> vmc_;
 
+  std::vector<Person2D> reprojected_keypoints() const;
+
+  std::unique_ptr<Detector> detector_;
+  std::vector<std::vector<DetectedPerson>> detections_;
   FrameResult frame_;
   std::vector<Eigen::Vector3d> raw_previous_;  // unfiltered, for person tracking; empty when unknown
   std::vector<OneEuroFilter3> filters_;

@@ -1,0 +1,194 @@
+// 2D detection entry points: the stand-alone detector, and the session's solve from images.
+#include <cstring>
+
+#include "capi/boundary.h"
+#include "capi/detect_c.h"
+#include "capi/frame_queries.h"
+#include "capi/handles.h"
+#include "detect/ort_model.h"
+
+using namespace octocap;
+
+namespace octocap::capi {
+
+DetectorConfig detector_config(const octocap_detector_config_t& c) {
+  if (c.struct_size != sizeof(octocap_detector_config_t))
+    throw Error(Errc::struct_size, "octocap_detector_config_t.struct_size is " + std::to_string(c.struct_size) +
+                                       ", expected " + std::to_string(sizeof(octocap_detector_config_t)) +
+                                       " (call octocap_detector_config_init first)");
+  DetectorConfig d;
+  const size_t len = strnlen(c.model, sizeof c.model);
+  if (len == sizeof c.model) throw Error(Errc::invalid_argument, "detector model path is not NUL-terminated");
+  d.model.assign(c.model, len);
+  if (c.mode != OCTOCAP_DETECT_PER_VIEW && c.mode != OCTOCAP_DETECT_MOSAIC && c.mode != OCTOCAP_DETECT_CROP)
+    throw Error(Errc::invalid_argument, "detector mode " + std::to_string(c.mode) + " is not a known mode");
+  d.mode = static_cast<DetectMode>(c.mode);
+  if (c.person_pick < OCTOCAP_PICK_ALL || c.person_pick > OCTOCAP_PICK_NEAREST_PREVIOUS)
+    throw Error(Errc::invalid_argument, "detector person_pick " + std::to_string(c.person_pick) + " is not known");
+  d.pick = static_cast<PersonPick>(c.person_pick);
+  if (c.threads > 256) throw Error(Errc::invalid_argument, "detector threads must be 0..256");
+  d.threads = static_cast<int>(c.threads);
+  d.mosaic_tile = static_cast<int>(std::min<uint32_t>(c.mosaic_tile_px, 1u << 20));
+  if (c.max_people == 0 || c.max_people > 64) throw Error(Errc::invalid_argument, "detector max_people must be 1..64");
+  d.max_people = c.max_people;
+  require_finite(c.min_confidence, "detector min_confidence");
+  d.min_confidence = c.min_confidence;
+  return d;
+}
+
+std::vector<ImageView> image_views(const octocap_image_t* images, uint32_t count) {
+  if (count == 0) throw Error(Errc::invalid_argument, "no images (count is 0)");
+  require(images, "images");
+  std::vector<ImageView> views(count);
+  for (uint32_t i = 0; i < count; ++i) {
+    const octocap_image_t& im = images[i];
+    if (im.format < OCTOCAP_PIXELS_RGB8 || im.format > OCTOCAP_PIXELS_RGBA8)
+      throw Error(Errc::invalid_argument, "image " + std::to_string(i) + ": unknown pixel format " + std::to_string(im.format));
+    if (im.width > 16384 || im.height > 16384 || im.stride_bytes > (1u << 20))
+      throw Error(Errc::invalid_argument, "image " + std::to_string(i) + ": size or stride out of range");
+    views[i] = {im.pixels, static_cast<int>(im.width), static_cast<int>(im.height), static_cast<int>(im.stride_bytes),
+                static_cast<PixelFormat>(im.format)};
+    validate_image(views[i], ("image " + std::to_string(i)).c_str());
+  }
+  return views;
+}
+
+void fill_detect_info(const Detector& detector, octocap_detect_info_t* out) {
+  require(out, "out");
+  if (out->struct_size != sizeof(octocap_detect_info_t))
+    throw Error(Errc::struct_size, "octocap_detect_info_t.struct_size must be " + std::to_string(sizeof(octocap_detect_info_t)));
+  const DetectTimings& t = detector.timings();
+  out->total_ms = static_cast<float>(t.total_ms);
+  out->preprocess_ms = static_cast<float>(t.preprocess_ms);
+  out->inference_ms = static_cast<float>(t.inference_ms);
+  out->inferences = static_cast<uint32_t>(t.inferences);
+  out->layout = static_cast<octocap_layout_t>(detector.card().layout);
+  out->keypoint_count = static_cast<uint32_t>(layout(detector.card().layout).keypoints.size());
+  copy_name(out->model, sizeof out->model, detector.card().name);
+}
+
+}  // namespace octocap::capi
+
+namespace {
+
+void copy_keypoints(const Person2D& p, octocap_keypoint2d_t* out) {
+  for (size_t k = 0; k < p.size(); ++k)
+    out[k] = {static_cast<float>(p[k].x), static_cast<float>(p[k].y), static_cast<float>(p[k].confidence)};
+}
+
+const std::vector<DetectedPerson>& view_people(const std::vector<std::vector<DetectedPerson>>& all, uint32_t view) {
+  if (view >= all.size())
+    throw Error(Errc::invalid_argument, "view " + std::to_string(view) + " out of range (" + std::to_string(all.size()) +
+                                            " views in the last detection)");
+  return all[view];
+}
+
+}  // namespace
+
+extern "C" {
+
+void octocap_detector_config_init(octocap_detector_config_t* c) {
+  if (!c) return;
+  *c = octocap_detector_config_t{};
+  c->struct_size = sizeof(octocap_detector_config_t);
+  c->mode = OCTOCAP_DETECT_PER_VIEW;
+  c->person_pick = OCTOCAP_PICK_ALL;
+  c->threads = 0;
+  c->mosaic_tile_px = 256;
+  c->max_people = 4;
+  c->min_confidence = 0.3f;
+}
+
+octocap_result_t octocap_detector_create(const octocap_detector_config_t* cfg, octocap_detector_t** out) {
+  return capi::guard([&] {
+    capi::require(out, "out");
+    *out = nullptr;
+    capi::require(cfg, "cfg");
+    auto detector = std::make_unique<Detector>(capi::detector_config(*cfg));
+    *out = capi::make_handle<octocap_detector_t>(std::move(detector));
+  });
+}
+
+void octocap_detector_destroy(octocap_detector_t* d) { capi::destroy_handle(d); }
+
+octocap_result_t octocap_detector_run(octocap_detector_t* d, const octocap_image_t* images, uint32_t count) {
+  return capi::guard([&] {
+    capi::checked(d, "detector");
+    d->people.clear();
+    d->people = d->detector->detect(capi::image_views(images, count));
+  });
+}
+
+octocap_result_t octocap_detector_people(const octocap_detector_t* d, uint32_t view, uint32_t* count) {
+  return capi::guard([&] {
+    capi::checked(d, "detector");
+    capi::require(count, "count");
+    *count = static_cast<uint32_t>(view_people(d->people, view).size());
+  });
+}
+
+octocap_result_t octocap_detector_keypoints(const octocap_detector_t* d, uint32_t view, uint32_t person,
+                                            octocap_keypoint2d_t* out, uint32_t capacity, uint32_t* count) {
+  return capi::guard([&] {
+    capi::checked(d, "detector");
+    const auto& people = view_people(d->people, view);
+    if (person >= people.size())
+      throw Error(Errc::invalid_argument, "person " + std::to_string(person) + " out of range (" +
+                                              std::to_string(people.size()) + " in view " + std::to_string(view) + ")");
+    const Person2D& p = people[person].keypoints;
+    capi::fill_array(static_cast<uint32_t>(p.size()), out, capacity, count, [&] { copy_keypoints(p, out); });
+  });
+}
+
+octocap_result_t octocap_detector_info(const octocap_detector_t* d, octocap_detect_info_t* out) {
+  return capi::guard([&] {
+    capi::checked(d, "detector");
+    capi::fill_detect_info(*d->detector, out);
+  });
+}
+
+const char* octocap_onnxruntime_version(void) {
+  static thread_local std::string version;
+  try {
+    version = onnxruntime_version();
+  } catch (...) {
+    version.clear();
+  }
+  return version.c_str();
+}
+
+octocap_result_t octocap_session_solve_images(octocap_session_t* s, const octocap_image_t* images,
+                                              uint32_t view_count, int64_t timestamp_us) {
+  return capi::guard([&] {
+    capi::checked(s, "session");
+    s->session->solve_images(capi::image_views(images, view_count), timestamp_us);
+  });
+}
+
+octocap_result_t octocap_session_detections(const octocap_session_t* s, uint32_t view, octocap_keypoint2d_t* out,
+                                            uint32_t capacity, uint32_t* count) {
+  return capi::guard([&] {
+    capi::checked(s, "session");
+    if (!s->session->detector()) throw Error(Errc::no_result, "no frame has been solved from images yet");
+    const auto& people = view_people(s->session->detections(), view);
+    size_t needed = 0;
+    for (const auto& p : people) needed += p.keypoints.size();
+    capi::fill_array(static_cast<uint32_t>(needed), out, capacity, count, [&] {
+      size_t at = 0;
+      for (const auto& p : people) {
+        copy_keypoints(p.keypoints, out + at);
+        at += p.keypoints.size();
+      }
+    });
+  });
+}
+
+octocap_result_t octocap_session_detect_info(const octocap_session_t* s, octocap_detect_info_t* out) {
+  return capi::guard([&] {
+    capi::checked(s, "session");
+    if (!s->session->detector()) throw Error(Errc::no_result, "no frame has been solved from images yet");
+    capi::fill_detect_info(*s->session->detector(), out);
+  });
+}
+
+}  // extern "C"

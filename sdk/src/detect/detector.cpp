@@ -1,0 +1,167 @@
+#include "detect/detector.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+
+#include "core/error.h"
+#include "core/layout.h"
+#include "detect/ort_model.h"
+
+#ifndef OCTOCAP_DEFAULT_MODELS_DIR
+#define OCTOCAP_DEFAULT_MODELS_DIR "models"
+#endif
+
+namespace octocap {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+bool ends_with(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+int round_to_multiple(double v, int m) { return std::max(m, static_cast<int>(std::lround(v / m)) * m); }
+
+// A crop around a person box with the network's aspect, padded so limbs moving since the box stay inside.
+Rect crop_around(const Rect& box, double aspect) {
+  const double pad = 1.4;
+  const double h = std::max(box.height, box.width / aspect) * pad;
+  const double w = h * aspect;
+  return {box.x + box.width / 2 - w / 2, box.y + box.height / 2 - h / 2, w, h};
+}
+
+}  // namespace
+
+std::string models_directory() {
+  const char* env = std::getenv("OCTOCAP_MODELS_DIR");
+  return env && *env ? std::string(env) : std::string(OCTOCAP_DEFAULT_MODELS_DIR);
+}
+
+std::string resolve_model_path(const std::string& model, DetectMode mode) {
+  std::string name = model;
+  if (name.empty()) name = mode == DetectMode::mosaic ? "movenet-multipose" : "movenet-thunder";
+  if (name.find('/') != std::string::npos || ends_with(name, ".onnx")) return name;
+  return models_directory() + "/" + name + ".onnx";
+}
+
+Detector::Detector(const DetectorConfig& config) : config_(config) {
+  if (config.threads < 0) throw Error(Errc::invalid_argument, "detector threads must be >= 0");
+  if (config.mosaic_tile < 32 || config.mosaic_tile > 4096)
+    throw Error(Errc::invalid_argument, "mosaic tile must be 32..4096 pixels, got " + std::to_string(config.mosaic_tile));
+  if (config.max_people == 0) throw Error(Errc::invalid_argument, "max people per view must be at least 1");
+  path_ = resolve_model_path(config.model, config.mode);
+  card_ = read_model_card(model_card_path(path_));
+  if (config.mode == DetectMode::mosaic && (card_.max_people < 2 || !card_.dynamic_size))
+    throw Error(Errc::invalid_argument, "the mosaic needs a multi-person model that accepts any input size (one "
+                                        "person per tile); " + card_.name + " is not one: use movenet-multipose");
+  model_ = std::make_unique<OrtModel>(path_, card_, config.threads);
+}
+
+Detector::~Detector() = default;
+
+std::pair<int, int> Detector::input_size_for(double aspect) const {
+  if (!card_.dynamic_size) return {card_.input_width, card_.input_height};
+  const int h = round_to_multiple(card_.input_height, card_.size_multiple);
+  return {round_to_multiple(h * aspect, card_.size_multiple), h};
+}
+
+std::vector<DetectedPerson> Detector::infer_region(const ImageView& view, const Rect& region) {
+  const auto t0 = Clock::now();
+  const auto [w, h] = input_size_for(region.width / region.height);
+  canvas_.reset(w, h);
+  const Rect dst{0, 0, static_cast<double>(w), static_cast<double>(h)};
+  const Letterbox box = fit_letterbox(region, dst);
+  draw_letterboxed(view, region, dst, box, canvas_);
+  const auto t1 = Clock::now();
+  timings_.preprocess_ms += std::chrono::duration<double, std::milli>(t1 - t0).count();
+  const std::vector<Tensor> out = model_->run(canvas_);
+  timings_.inference_ms += ms_since(t1);
+  ++timings_.inferences;
+  std::vector<DetectedPerson> people = decode_pose(card_, out, w, h, layout(card_.layout).keypoints.size());
+  // Back to view pixels; keypoints on the padding are the model's guesses at what it cannot see.
+  const double vx0 = std::max(0.0, region.x), vy0 = std::max(0.0, region.y);
+  const double vx1 = std::min<double>(view.width, region.x + region.width);
+  const double vy1 = std::min<double>(view.height, region.y + region.height);
+  for (DetectedPerson& p : people) {
+    for (Keypoint2D& k : p.keypoints) {
+      k.x = box.to_source_x(k.x);
+      k.y = box.to_source_y(k.y);
+      if (k.x < vx0 || k.x > vx1 || k.y < vy0 || k.y > vy1) k.confidence = 0;
+    }
+    p.box = {box.to_source_x(p.box.x), box.to_source_y(p.box.y), p.box.width / box.scale, p.box.height / box.scale};
+  }
+  return people;
+}
+
+std::vector<std::vector<DetectedPerson>> Detector::detect_mosaic(const std::vector<ImageView>& views) {
+  const auto t0 = Clock::now();
+  std::vector<ViewSize> sizes;
+  std::vector<double> aspects;
+  for (const ImageView& v : views) {
+    sizes.push_back({v.width, v.height});
+    aspects.push_back(static_cast<double>(v.width) / v.height);
+  }
+  std::nth_element(aspects.begin(), aspects.begin() + aspects.size() / 2, aspects.end());
+  const int m = card_.size_multiple;
+  const int tile_h = round_to_multiple(config_.mosaic_tile, m);
+  const int tile_w = round_to_multiple(tile_h * aspects[aspects.size() / 2], m);
+  const MosaicLayout layout_plan = plan_mosaic(sizes, tile_w, tile_h);
+  canvas_.reset(layout_plan.width, layout_plan.height);
+  for (size_t v = 0; v < views.size(); ++v)
+    draw_letterboxed(views[v], {0, 0, static_cast<double>(views[v].width), static_cast<double>(views[v].height)},
+                     layout_plan.tiles[v].cell, layout_plan.tiles[v].box, canvas_);
+  const auto t1 = Clock::now();
+  timings_.preprocess_ms += std::chrono::duration<double, std::milli>(t1 - t0).count();
+  const std::vector<Tensor> out = model_->run(canvas_);
+  timings_.inference_ms += ms_since(t1);
+  ++timings_.inferences;
+  const auto people = decode_pose(card_, out, layout_plan.width, layout_plan.height, layout(card_.layout).keypoints.size());
+  return split_mosaic_people(layout_plan, people, config_.min_confidence);
+}
+
+std::vector<std::vector<DetectedPerson>> Detector::detect(const std::vector<ImageView>& views) {
+  if (views.empty()) throw Error(Errc::invalid_argument, "no images");
+  for (size_t v = 0; v < views.size(); ++v) validate_image(views[v], ("image " + std::to_string(v)).c_str());
+  const auto t0 = Clock::now();
+  timings_ = {};
+  std::vector<std::vector<DetectedPerson>> result;
+  if (config_.mode == DetectMode::mosaic) {
+    result = detect_mosaic(views);
+  } else {
+    result.resize(views.size());
+    last_boxes_.resize(views.size());
+    const double aspect = static_cast<double>(card_.input_width) / card_.input_height;
+    for (size_t v = 0; v < views.size(); ++v) {
+      const Rect whole{0, 0, static_cast<double>(views[v].width), static_cast<double>(views[v].height)};
+      if (config_.mode == DetectMode::per_view) {
+        result[v] = infer_region(views[v], whole);
+        continue;
+      }
+      // Crop: around the hint, else around last frame's person, else find the person on the whole view first.
+      Rect box = v < hints_.size() ? keypoint_box(hints_[v], 0.01) : Rect{};
+      if (box.width <= 0 && box.height <= 0) box = last_boxes_[v];
+      if (box.width <= 0 && box.height <= 0) {
+        auto found = infer_region(views[v], whole);
+        pick_people(found, config_.pick == PersonPick::all ? PersonPick::most_confident : config_.pick,
+                    v < hints_.size() ? hints_[v] : Person2D{}, 1, config_.min_confidence);
+        if (found.empty() || found[0].box.width <= 0) continue;
+        box = keypoint_box(found[0].keypoints, config_.min_confidence);
+        if (box.width <= 0 && box.height <= 0) continue;
+      }
+      result[v] = infer_region(views[v], crop_around(box, aspect));
+      last_boxes_[v] = result[v].empty() ? Rect{} : keypoint_box(result[v][0].keypoints, config_.min_confidence);
+    }
+  }
+  for (size_t v = 0; v < result.size(); ++v)
+    pick_people(result[v], config_.pick, v < hints_.size() ? hints_[v] : Person2D{}, config_.max_people,
+                config_.min_confidence);
+  timings_.total_ms = ms_since(t0);
+  return result;
+}
+
+}  // namespace octocap

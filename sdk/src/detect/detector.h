@@ -1,0 +1,73 @@
+// 2D detection for N views: per view (one inference each), the paper's mosaic (one inference for all), or crops
+// around where the person was (one inference each, on more pixels of the person). Keypoints come back in each
+// view's own pixel coordinates.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "detect/decoders.h"
+#include "detect/image.h"
+#include "detect/model_card.h"
+#include "detect/mosaic.h"
+#include "detect/person_pick.h"
+
+namespace octocap {
+
+class OrtModel;
+
+enum class DetectMode : int { per_view = 0, mosaic = 1, crop = 2 };
+
+struct DetectorConfig {
+  std::string model;  // a path to a .onnx (its card beside it) or a shipped model's name; empty: the mode's default
+  DetectMode mode = DetectMode::per_view;
+  PersonPick pick = PersonPick::all;
+  int threads = 0;           // ONNX Runtime intra-op threads; 0 = its default
+  int mosaic_tile = 256;     // mosaic cell height in pixels (the width follows the views' aspect)
+  size_t max_people = 4;     // per view, for PersonPick::all
+  double min_confidence = 0.3;
+};
+
+struct DetectTimings {
+  double total_ms = 0, preprocess_ms = 0, inference_ms = 0;
+  int inferences = 0;
+};
+
+// Where shipped models live: $OCTOCAP_MODELS_DIR, else the directory the build was configured with.
+std::string models_directory();
+// The .onnx a config names (a path, or a name looked up in models_directory()).
+std::string resolve_model_path(const std::string& model, DetectMode mode);
+
+class Detector {
+ public:
+  // Throws Error(io / parse / invalid_argument / unsupported) for a missing or unfit model.
+  explicit Detector(const DetectorConfig& config);
+  ~Detector();
+
+  // people[view], best first, in the views' pixels. Throws Error(invalid_argument) for a bad image.
+  std::vector<std::vector<DetectedPerson>> detect(const std::vector<ImageView>& views);
+  // Where the person is expected in each view next frame (e.g. the last 3D joints reprojected); an empty
+  // person means no hint. Used by the crop mode and by PersonPick::nearest_previous.
+  void set_hints(std::vector<Person2D> hints) { hints_ = std::move(hints); }
+
+  const ModelCard& card() const { return card_; }
+  const DetectorConfig& config() const { return config_; }
+  const std::string& model_path() const { return path_; }
+  const DetectTimings& timings() const { return timings_; }
+
+ private:
+  std::vector<DetectedPerson> infer_region(const ImageView& view, const Rect& region);
+  std::vector<std::vector<DetectedPerson>> detect_mosaic(const std::vector<ImageView>& views);
+  std::pair<int, int> input_size_for(double aspect) const;
+
+  DetectorConfig config_;
+  std::string path_;
+  ModelCard card_;
+  std::unique_ptr<OrtModel> model_;
+  RgbCanvas canvas_;
+  std::vector<Person2D> hints_;
+  std::vector<Rect> last_boxes_;  // the crop mode's fallback when no hint was given
+  DetectTimings timings_;
+};
+
+}  // namespace octocap

@@ -1,0 +1,51 @@
+// Camera images as the caller hands them (no copy), and the letterbox that fits one into a network input.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+namespace octocap {
+
+enum class PixelFormat : int { rgb8 = 0, bgr8 = 1, rgba8 = 2 };
+
+struct ImageView {
+  const uint8_t* pixels = nullptr;
+  int width = 0, height = 0;
+  int stride = 0;  // bytes per row
+  PixelFormat format = PixelFormat::rgb8;
+};
+
+int bytes_per_pixel(PixelFormat f);
+// Throws Error(invalid_argument) naming `what` for null pixels, zero size, a stride shorter than a row, or an
+// unknown format.
+void validate_image(const ImageView& image, const char* what);
+
+// A rectangle of a source image scaled uniformly (aspect kept) and centred in a destination rectangle.
+// dst = src * scale + offset; the inverse maps detections back to source pixels.
+struct Letterbox {
+  double scale = 1, offset_x = 0, offset_y = 0;
+  double to_source_x(double x) const { return (x - offset_x) / scale; }
+  double to_source_y(double y) const { return (y - offset_y) / scale; }
+  double to_dest_x(double x) const { return x * scale + offset_x; }
+  double to_dest_y(double y) const { return y * scale + offset_y; }
+};
+
+struct Rect {
+  double x = 0, y = 0, width = 0, height = 0;
+};
+
+// Placement of `src` (a rectangle of a source image) centred inside `dst`, aspect kept.
+Letterbox fit_letterbox(const Rect& src, const Rect& dst);
+
+// An RGB8 canvas the network input is built in (packed rows, zero = black padding).
+struct RgbCanvas {
+  int width = 0, height = 0;
+  std::vector<uint8_t> pixels;
+  void reset(int w, int h);
+};
+
+// Draws `src_rect` of `image` into `canvas` at `dst_rect` through `box` (from fit_letterbox), converting to RGB.
+// Parts of src_rect outside the image stay black (crops may reach past the border).
+void draw_letterboxed(const ImageView& image, const Rect& src_rect, const Rect& dst_rect, const Letterbox& box,
+                      RgbCanvas& canvas);
+
+}  // namespace octocap

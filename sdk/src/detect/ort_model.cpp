@@ -1,0 +1,184 @@
+#include "detect/ort_model.h"
+
+#include <sys/stat.h>
+
+#include <mutex>
+
+#include "core/error.h"
+
+#ifdef OCTOCAP_HAVE_ONNXRUNTIME
+// Manual init: the C++ wrapper otherwise asks for the API at static-initialisation time and crashes (null
+// table) when the library is older than the headers. Here that becomes a clear error instead.
+#define ORT_API_MANUAL_INIT
+#include <onnxruntime_cxx_api.h>
+#endif
+
+namespace octocap {
+
+#ifdef OCTOCAP_HAVE_ONNXRUNTIME
+namespace {
+
+const OrtApi& ort_api() {
+  static std::once_flag once;
+  static const OrtApi* api = nullptr;
+  std::call_once(once, [] {
+    api = OrtGetApiBase()->GetApi(ORT_API_VERSION);
+    if (api) Ort::InitApi(api);
+  });
+  if (!api)
+    throw Error(Errc::unsupported, std::string("the ONNX Runtime library (") + OrtGetApiBase()->GetVersionString() +
+                                       ") is older than the headers octocap was built with (API " +
+                                       std::to_string(ORT_API_VERSION) + "); install a newer libonnxruntime");
+  return *api;
+}
+
+Ort::Env& ort_env() {
+  ort_api();
+  static Ort::Env env(ORT_LOGGING_LEVEL_ERROR, "octocap");
+  return env;
+}
+
+}  // namespace
+
+std::string onnxruntime_version() {
+  ort_api();
+  return OrtGetApiBase()->GetVersionString();
+}
+
+struct OrtModel::Impl {
+  Ort::Session session{nullptr};
+  std::string input_name;
+  std::vector<std::string> output_names;
+  ONNXTensorElementDataType input_type = ONNX_TENSOR_ELEMENT_DATA_TYPE_FLOAT;
+  std::vector<int32_t> i32;
+  std::vector<uint8_t> u8;
+  std::vector<float> f32;
+};
+
+OrtModel::OrtModel(const std::string& path, const ModelCard& card, int intra_threads)
+    : card_(card), impl_(std::make_unique<Impl>()) {
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) throw Error(Errc::io, "model file not found: " + path);
+  Ort::Env& env = ort_env();
+  try {
+    Ort::SessionOptions options;
+    options.SetIntraOpNumThreads(intra_threads);
+    options.SetInterOpNumThreads(1);
+    options.SetGraphOptimizationLevel(GraphOptimizationLevel::ORT_ENABLE_ALL);
+    impl_->session = Ort::Session(env, path.c_str(), options);
+    Ort::AllocatorWithDefaultOptions alloc;
+    if (impl_->session.GetInputCount() != 1)
+      throw Error(Errc::invalid_argument, path + ": a pose model needs exactly one input, this one has " +
+                                              std::to_string(impl_->session.GetInputCount()));
+    impl_->input_name = impl_->session.GetInputNameAllocated(0, alloc).get();
+    for (size_t i = 0; i < impl_->session.GetOutputCount(); ++i)
+      impl_->output_names.emplace_back(impl_->session.GetOutputNameAllocated(i, alloc).get());
+    const Ort::TypeInfo type_info = impl_->session.GetInputTypeInfo(0);  // owns what `info` views
+    auto info = type_info.GetTensorTypeAndShapeInfo();
+    impl_->input_type = info.GetElementType();
+    const ONNXTensorElementDataType want = card.element == ElementType::int32   ? ONNX_TENSOR_ELEMENT_DATA_TYPE_INT32
+                                           : card.element == ElementType::uint8 ? ONNX_TENSOR_ELEMENT_DATA_TYPE_UINT8
+                                                                                : ONNX_TENSOR_ELEMENT_DATA_TYPE_FLOAT;
+    if (impl_->input_type != want)
+      throw Error(Errc::invalid_argument, path + ": the model's input element type (" +
+                                              std::to_string(static_cast<int>(impl_->input_type)) +
+                                              ") differs from its card's \"element_type\"");
+    const auto shape = info.GetShape();
+    if (shape.size() != 4)
+      throw Error(Errc::invalid_argument, path + ": input " + shape_string(shape) + " is not a 4D image tensor");
+    const int64_t h = shape[card.nchw ? 2 : 1], w = shape[card.nchw ? 3 : 2], c = shape[card.nchw ? 1 : 3];
+    if (c != 3 && c != -1)
+      throw Error(Errc::invalid_argument, path + ": input " + shape_string(shape) + " has " + std::to_string(c) +
+                                              " channels, 3 expected (is the card's tensor_layout right?)");
+    if (!card.dynamic_size && ((h > 0 && h != card.input_height) || (w > 0 && w != card.input_width)))
+      throw Error(Errc::invalid_argument, path + ": input " + shape_string(shape) + " differs from the card's " +
+                                              std::to_string(card.input_width) + "x" + std::to_string(card.input_height));
+  } catch (const Ort::Exception& e) {
+    throw Error(Errc::parse, path + ": ONNX Runtime cannot load it: " + e.what());
+  }
+}
+
+OrtModel::~OrtModel() = default;
+
+std::vector<Tensor> OrtModel::run(const RgbCanvas& canvas) {
+  const int W = canvas.width, H = canvas.height;
+  const bool size_ok = card_.dynamic_size
+                           ? (W % card_.size_multiple == 0 && H % card_.size_multiple == 0)
+                           : (W == card_.input_width && H == card_.input_height);
+  if (!size_ok)
+    throw Error(Errc::invalid_argument, "network input " + std::to_string(W) + "x" + std::to_string(H) +
+                                            " does not suit model " + card_.name);
+  const size_t n = static_cast<size_t>(W) * H * 3;
+  const std::vector<int64_t> shape = card_.nchw ? std::vector<int64_t>{1, 3, H, W} : std::vector<int64_t>{1, H, W, 3};
+  // Element i of the tensor from canvas pixel p, channel c (after the card's channel order and normalisation).
+  auto fill = [&](auto& buffer) {
+    buffer.resize(n);
+    const uint8_t* px = canvas.pixels.data();
+    const size_t plane = static_cast<size_t>(W) * H;
+    for (size_t p = 0; p < plane; ++p)
+      for (int c = 0; c < 3; ++c) {
+        const int source = card_.bgr ? 2 - c : c;
+        const float v = (px[p * 3 + source] - card_.mean[c]) * card_.scale[c];
+        const size_t at = card_.nchw ? c * plane + p : p * 3 + c;
+        using T = typename std::decay_t<decltype(buffer)>::value_type;
+        buffer[at] = std::is_integral_v<T> ? static_cast<T>(std::lround(v)) : static_cast<T>(v);
+      }
+  };
+  Ort::MemoryInfo memory = Ort::MemoryInfo::CreateCpu(OrtArenaAllocator, OrtMemTypeDefault);
+  Ort::Value input{nullptr};
+  switch (card_.element) {
+    case ElementType::int32:
+      fill(impl_->i32);
+      input = Ort::Value::CreateTensor<int32_t>(memory, impl_->i32.data(), n, shape.data(), shape.size());
+      break;
+    case ElementType::uint8:
+      fill(impl_->u8);
+      input = Ort::Value::CreateTensor<uint8_t>(memory, impl_->u8.data(), n, shape.data(), shape.size());
+      break;
+    case ElementType::float32:
+      fill(impl_->f32);
+      input = Ort::Value::CreateTensor<float>(memory, impl_->f32.data(), n, shape.data(), shape.size());
+      break;
+  }
+  std::vector<const char*> names;
+  for (const auto& s : impl_->output_names) names.push_back(s.c_str());
+  const char* input_name = impl_->input_name.c_str();
+  std::vector<Ort::Value> outputs;
+  try {
+    outputs = impl_->session.Run(Ort::RunOptions{nullptr}, &input_name, &input, 1, names.data(), names.size());
+  } catch (const Ort::Exception& e) {
+    throw Error(Errc::invalid_argument, "model " + card_.name + " failed on a " + std::to_string(W) + "x" +
+                                            std::to_string(H) + " input: " + e.what());
+  }
+  std::vector<Tensor> result;
+  for (Ort::Value& v : outputs) {
+    if (!v.IsTensor()) throw Error(Errc::invalid_argument, "model " + card_.name + " has a non-tensor output");
+    auto info = v.GetTensorTypeAndShapeInfo();
+    Tensor t;
+    t.shape = info.GetShape();
+    const size_t count = info.GetElementCount();
+    t.data.resize(count);
+    switch (info.GetElementType()) {
+      case ONNX_TENSOR_ELEMENT_DATA_TYPE_FLOAT: std::copy_n(v.GetTensorData<float>(), count, t.data.begin()); break;
+      case ONNX_TENSOR_ELEMENT_DATA_TYPE_INT32: std::copy_n(v.GetTensorData<int32_t>(), count, t.data.begin()); break;
+      case ONNX_TENSOR_ELEMENT_DATA_TYPE_INT64: std::copy_n(v.GetTensorData<int64_t>(), count, t.data.begin()); break;
+      default: throw Error(Errc::invalid_argument, "model " + card_.name + " has an output that is not float/int");
+    }
+    result.push_back(std::move(t));
+  }
+  return result;
+}
+
+#else  // built without ONNX Runtime
+
+std::string onnxruntime_version() {
+  throw Error(Errc::unsupported, "this octocap was built without ONNX Runtime (OCTOCAP_WITH_ONNX=OFF)");
+}
+struct OrtModel::Impl {};
+OrtModel::OrtModel(const std::string&, const ModelCard& card, int) : card_(card) { onnxruntime_version(); }
+OrtModel::~OrtModel() = default;
+std::vector<Tensor> OrtModel::run(const RgbCanvas&) { return {}; }
+
+#endif
+
+}  // namespace octocap

@@ -1,0 +1,38 @@
+// One ONNX pose model loaded in ONNX Runtime, fed from an RGB canvas as its card describes. The only file that
+// includes ONNX Runtime's headers.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "detect/decoders.h"
+#include "detect/image.h"
+#include "detect/model_card.h"
+
+namespace octocap {
+
+// "1.32.0" from the loaded library; throws Error(unsupported) when the library is older than the headers octocap
+// was built with (or the build has no ONNX Runtime).
+std::string onnxruntime_version();
+
+class OrtModel {
+ public:
+  // intra_threads: ONNX Runtime's intra-op threads (0 = its default, all cores).
+  // Throws Error(io) for a missing file, Error(invalid_argument) for a model whose input does not fit the card.
+  OrtModel(const std::string& path, const ModelCard& card, int intra_threads);
+  ~OrtModel();
+  OrtModel(const OrtModel&) = delete;
+  OrtModel& operator=(const OrtModel&) = delete;
+
+  // Runs the network on `canvas` (its size must be the card's, or any multiple of size_multiple for dynamic
+  // models) and returns every output as float.
+  std::vector<Tensor> run(const RgbCanvas& canvas);
+  const ModelCard& card() const { return card_; }
+
+ private:
+  struct Impl;
+  ModelCard card_;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace octocap

@@ -1,0 +1,144 @@
+#include "detect_command.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <opencv2/imgcodecs.hpp>
+#include <stdexcept>
+#include <vector>
+
+#include "debug_draw.h"
+#include "image_source.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+void check(octocap_result_t r, const char* what) {
+  if (r != OCTOCAP_OK)
+    throw std::runtime_error(std::string(what) + ": " + octocap_last_error() + " (" + octocap_result_name(r) + ")");
+}
+
+struct DetectorDeleter {
+  void operator()(octocap_detector_t* d) const { octocap_detector_destroy(d); }
+};
+
+// OpenPose's own JSON (version 1.3), one file per camera and frame, as octocap solve --keypoints and Pose2Sim read.
+void write_openpose(const fs::path& path, const std::vector<std::vector<octocap_keypoint2d_t>>& people) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+  out << "{\"version\":1.3,\"people\":[";
+  for (size_t p = 0; p < people.size(); ++p) {
+    out << (p ? "," : "") << "{\"person_id\":[-1],\"pose_keypoints_2d\":[";
+    for (size_t k = 0; k < people[p].size(); ++k) {
+      char buf[96];
+      std::snprintf(buf, sizeof buf, "%s%.2f,%.2f,%.4f", k ? "," : "", people[p][k].x, people[p][k].y,
+                    people[p][k].confidence);
+      out << buf;
+    }
+    out << "]}";
+  }
+  out << "]}\n";
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+int detect(const DetectOptions& o) {
+  ImageSource source(o.images);
+  const octocap_detector_config_t cfg = o.detector.config();
+  octocap_detector_t* raw = nullptr;
+  check(octocap_detector_create(&cfg, &raw), "loading the model");
+  std::unique_ptr<octocap_detector_t, DetectorDeleter> detector(raw);
+  const size_t frames = o.max_frames ? std::min<size_t>(o.max_frames, source.frame_count()) : source.frame_count();
+  const auto& names = source.camera_names();
+  for (const auto& n : names) fs::create_directories(fs::path(o.output) / (n + "_json"));
+  if (!o.debug_images.empty()) fs::create_directories(o.debug_images);
+  octocap_detect_info_t info{};
+  info.struct_size = sizeof info;
+  double total_ms = 0, inference_ms = 0;
+  size_t found = 0;
+  for (size_t f = 0; f < frames; ++f) {
+    std::vector<cv::Mat> images = source.read(f);
+    std::vector<octocap_image_t> views;
+    for (const cv::Mat& m : images) views.push_back(as_image(m));
+    check(octocap_detector_run(detector.get(), views.data(), static_cast<uint32_t>(views.size())), "detecting");
+    check(octocap_detector_info(detector.get(), &info), "detect info");
+    total_ms += info.total_ms;
+    inference_ms += info.inference_ms;
+    for (size_t v = 0; v < views.size(); ++v) {
+      uint32_t count = 0;
+      check(octocap_detector_people(detector.get(), static_cast<uint32_t>(v), &count), "people");
+      std::vector<std::vector<octocap_keypoint2d_t>> people(count, std::vector<octocap_keypoint2d_t>(info.keypoint_count));
+      std::vector<octocap_keypoint2d_t> flat;
+      for (uint32_t p = 0; p < count; ++p) {
+        uint32_t n = 0;
+        check(octocap_detector_keypoints(detector.get(), static_cast<uint32_t>(v), p, people[p].data(),
+                                         info.keypoint_count, &n), "keypoints");
+        flat.insert(flat.end(), people[p].begin(), people[p].end());
+      }
+      found += count > 0;
+      char file[160];
+      std::snprintf(file, sizeof file, "%s_%012zu_keypoints.json", names[v].c_str(), f);
+      write_openpose(fs::path(o.output) / (names[v] + "_json") / file, people);
+      if (!o.debug_images.empty()) {
+        draw_detections(images[v], flat, info.keypoint_count, info.layout, 0.3f);
+        cv::imwrite(debug_image_path(o.debug_images, names[v], f), images[v]);
+      }
+    }
+    if (!o.quiet && frames >= 20 && (f + 1) % std::max<size_t>(1, frames / 10) == 0)
+      std::fprintf(stderr, "\r  frame %zu / %zu", f + 1, frames);
+  }
+  if (!o.quiet && frames >= 20) std::fprintf(stderr, "\n");
+  std::printf("octocap detect: %zu frames x %zu cameras, model %s (%s), mode %s, ONNX Runtime %s\n", frames,
+              names.size(), info.model, octocap_layout_name(info.layout), o.detector.mode.c_str(),
+              octocap_onnxruntime_version());
+  std::printf("  views with a person:  %zu / %zu\n", found, frames * names.size());
+  std::printf("  detection time:       %.1f ms/frame (inference %.1f ms), %.1f frames/s\n",
+              frames ? total_ms / frames : 0.0, frames ? inference_ms / frames : 0.0,
+              total_ms > 0 ? frames * 1000.0 / total_ms : 0.0);
+  std::printf("  wrote %s/<camera>_json/\n", o.output.c_str());
+  return 0;
+}
+
+}  // namespace
+
+octocap_detector_config_t DetectorOptions::config() const {
+  octocap_detector_config_t c;
+  octocap_detector_config_init(&c);
+  if (model.size() >= sizeof c.model) throw std::runtime_error("--model path is too long");
+  std::snprintf(c.model, sizeof c.model, "%s", model.c_str());
+  c.mode = mode == "mosaic" ? OCTOCAP_DETECT_MOSAIC : mode == "crop" ? OCTOCAP_DETECT_CROP : OCTOCAP_DETECT_PER_VIEW;
+  c.person_pick = pick == "largest"          ? OCTOCAP_PICK_LARGEST
+                  : pick == "most-confident" ? OCTOCAP_PICK_MOST_CONFIDENT
+                  : pick == "nearest"        ? OCTOCAP_PICK_NEAREST_PREVIOUS
+                                             : OCTOCAP_PICK_ALL;
+  c.threads = threads;
+  c.mosaic_tile_px = mosaic_tile;
+  c.max_people = max_people;
+  return c;
+}
+
+octocap_image_t as_image(const cv::Mat& bgr) {
+  octocap_image_t im{};
+  im.pixels = bgr.data;
+  im.width = static_cast<uint32_t>(bgr.cols);
+  im.height = static_cast<uint32_t>(bgr.rows);
+  im.stride_bytes = static_cast<uint32_t>(bgr.step[0]);
+  im.format = OCTOCAP_PIXELS_BGR8;
+  return im;
+}
+
+std::string debug_image_path(const std::string& dir, const std::string& camera, size_t frame) {
+  char name[160];
+  std::snprintf(name, sizeof name, "%s_frame_%06zu.png", camera.c_str(), frame);
+  return (fs::path(dir) / name).string();
+}
+
+int run_detect(const DetectOptions& options) {
+  try {
+    return detect(options);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "octocap detect: error: %s\n", e.what());
+    return 1;
+  }
+}

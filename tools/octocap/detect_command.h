@@ -1,0 +1,30 @@
+#pragma once
+#include <opencv2/core.hpp>
+#include <string>
+
+#include "octocap/octocap.h"
+
+// Detector options shared by `octocap detect` and `octocap solve --images`.
+struct DetectorOptions {
+  std::string model;  // empty: the mode's default
+  std::string mode = "per-view";
+  std::string pick = "all";
+  unsigned threads = 0;
+  unsigned mosaic_tile = 256;
+  unsigned max_people = 4;
+  octocap_detector_config_t config() const;
+};
+
+struct DetectOptions {
+  std::string images, output, debug_images;
+  unsigned max_frames = 0;  // 0: all
+  bool quiet = false;
+  DetectorOptions detector;
+};
+
+int run_detect(const DetectOptions& options);
+
+// A BGR OpenCV image as the C ABI's image (borrowed).
+octocap_image_t as_image(const cv::Mat& bgr);
+// frame_000012.png style names shared by the debug outputs.
+std::string debug_image_path(const std::string& dir, const std::string& camera, size_t frame);

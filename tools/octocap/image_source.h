@@ -1,0 +1,25 @@
+// Camera images for the command line: a folder holding one sub-folder of pictures per camera, or one video file
+// per camera (sorted by name = calibration order), read frame by frame with OpenCV.
+#pragma once
+#include <memory>
+#include <opencv2/core.hpp>
+#include <string>
+#include <vector>
+
+class ImageSource {
+ public:
+  // Throws std::runtime_error naming the folder when it holds neither layout, or the cameras disagree in length.
+  explicit ImageSource(const std::string& folder);
+  ~ImageSource();
+  size_t camera_count() const { return names_.size(); }
+  size_t frame_count() const { return frames_; }
+  const std::vector<std::string>& camera_names() const { return names_; }
+  // BGR images of every camera for frame f (frames are read in order; going back re-opens the videos).
+  std::vector<cv::Mat> read(size_t f);
+
+ private:
+  struct Camera;
+  std::vector<std::string> names_;
+  std::vector<std::unique_ptr<Camera>> cameras_;
+  size_t frames_ = 0;
+};
