@@ -109,7 +109,7 @@ int solve(const SolveOptions& o) {
   if (o.max_frames) frames = std::min(frames, o.start_frame + o.max_frames);
   const std::string input = o.images.empty() ? o.keypoints : o.images;
   if (views != cameras)
-    throw std::runtime_error(input + " has " + std::to_string(views) + " cameras, " + o.calibration +
+    throw std::runtime_error(input + " has " + std::to_string(views) + (source ? " cameras, " : " camera folders, ") + o.calibration +
                              " has " + std::to_string(cameras) + " cameras");
 
   octocap_session_config_t cfg;

@@ -19,6 +19,9 @@ namespace Octocap
     public enum UpAxis : int { Y = 0, Z = 1, Auto = 2 }
     public enum CoordFrame : int { Rig = 0, Unity = 1, Godot = 2 }
     public enum StreamQos : int { Live = 0, Record = 1 }
+    public enum PixelFormat : int { Rgb8 = 0, Bgr8 = 1, Rgba8 = 2 }
+    public enum DetectMode : int { PerView = 0, Mosaic = 1, Crop = 2 }
+    public enum PersonPick : int { All = 0, Largest = 1, MostConfident = 2, NearestPrevious = 3 }
 
     /// <summary>The paper's skeleton joints (octocap_joint_id_t).</summary>
     public enum JointId : int
@@ -133,6 +136,7 @@ namespace Octocap
         public fixed byte StreamTopic[32];
         public uint VmcPort;
         public fixed byte VmcHost[64];
+        public DetectorConfig Detector;
 
         /// <summary>The library's defaults (octocap_session_config_init), struct_size set.</summary>
         public static SessionConfig Default
@@ -144,6 +148,56 @@ namespace Octocap
                 return c;
             }
         }
+    }
+
+    /// <summary>octocap_detector_config_t (also nested in <see cref="SessionConfig"/>).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public unsafe struct DetectorConfig
+    {
+        public uint StructSize;
+        public fixed byte Model[512];
+        public DetectMode Mode;
+        public PersonPick PersonPick;
+        public uint Threads;
+        public uint MosaicTilePx;
+        public uint MaxPeople;
+        public float MinConfidence;
+
+        /// <summary>A shipped model's name ("movenet-thunder") or an .onnx path; null or "" for the mode's default.</summary>
+        public void SetModel(string model)
+        {
+            byte[] utf8 = System.Text.Encoding.UTF8.GetBytes(model ?? "");
+            if (utf8.Length >= 512) throw new OctocapException(Result.InvalidArgument, "model path is longer than 511 bytes");
+            fixed (byte* m = Model)
+            {
+                for (int i = 0; i < 512; ++i) m[i] = i < utf8.Length ? utf8[i] : (byte)0;
+            }
+        }
+    }
+
+    /// <summary>octocap_image_t: a camera image the caller keeps alive (pinned) for the duration of the call.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct Image
+    {
+        public IntPtr Pixels;
+        public uint Width;
+        public uint Height;
+        public uint StrideBytes;
+        public PixelFormat Format;
+    }
+
+    /// <summary>octocap_detect_info_t.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public unsafe struct DetectInfo
+    {
+        public uint StructSize;
+        public float TotalMs;
+        public float PreprocessMs;
+        public float InferenceMs;
+        public uint Inferences;
+        public Layout Layout;
+        public uint KeypointCount;
+        public fixed byte Model[32];
     }
 
     /// <summary>octocap_subscriber_config_t. Start from <see cref="SubscriberConfig.Default"/>.</summary>
@@ -210,6 +264,10 @@ namespace Octocap
         [DllImport(Lib)] internal static extern Result octocap_session_create(ref SessionConfig cfg, CalibrationHandle calib, out SessionHandle session);
         [DllImport(Lib)] internal static extern void octocap_session_destroy(IntPtr session);
         [DllImport(Lib)] internal static extern Result octocap_session_solve_keypoints(SessionHandle s, Keypoint2D* keypoints, uint* peoplePerView, uint viewCount, long timestampUs);
+        [DllImport(Lib)] internal static extern Result octocap_session_solve_images(SessionHandle s, Image* images, uint viewCount, long timestampUs);
+        [DllImport(Lib)] internal static extern Result octocap_session_detections(SessionHandle s, uint view, Keypoint2D* output, uint capacity, out uint count);
+        [DllImport(Lib)] internal static extern Result octocap_session_detect_info(SessionHandle s, ref DetectInfo info);
+        [DllImport(Lib)] internal static extern IntPtr octocap_onnxruntime_version();
         [DllImport(Lib)] internal static extern Result octocap_session_reset(SessionHandle s);
         [DllImport(Lib)] internal static extern Result octocap_session_flush_stream(SessionHandle s);
         [DllImport(Lib)] internal static extern Result octocap_session_stream_subscribers(SessionHandle s, out uint count);

@@ -41,6 +41,35 @@ namespace Octocap
                 OctocapException.Check(NativeMethods.octocap_session_solve_keypoints(Handle, p, ppv, (uint)peoplePerView.Length, timestampUs));
         }
 
+        /// <summary>Solves one frame from camera images (calibration order): the config's detector, then the 3D solve.
+        /// Pixels must stay pinned for the call (e.g. Unity's NativeArray, or a fixed byte[]).</summary>
+        public unsafe void SolveImages(ReadOnlySpan<Image> images, long timestampUs)
+        {
+            fixed (Image* p = &MemoryMarshal.GetReference(images))
+                OctocapException.Check(NativeMethods.octocap_session_solve_images(Handle, p, (uint)images.Length, timestampUs));
+        }
+
+        /// <summary>The 2D keypoints the detector kept in <paramref name="view"/> last frame (people one after the
+        /// other, KeypointCount each); returns how many keypoints were written.</summary>
+        public unsafe int Detections(int view, Span<Keypoint2D> output)
+        {
+            uint count;
+            fixed (Keypoint2D* p = &MemoryMarshal.GetReference(output))
+                OctocapException.Check(NativeMethods.octocap_session_detections(Handle, (uint)view, p, (uint)output.Length, out count));
+            return (int)count;
+        }
+
+        /// <summary>Timings and model of the last detection.</summary>
+        public DetectInfo DetectInfo
+        {
+            get
+            {
+                var info = new DetectInfo { StructSize = (uint)Marshal.SizeOf(typeof(DetectInfo)) };
+                OctocapException.Check(NativeMethods.octocap_session_detect_info(Handle, ref info));
+                return info;
+            }
+        }
+
         public void Reset() => OctocapException.Check(NativeMethods.octocap_session_reset(Handle));
 
         /// <summary>Blocks until every published frame has been handed to DDS.</summary>

@@ -17,6 +17,8 @@ namespace Octocap.Tests
             { "octocap_frame_info_t", typeof(FrameInfo) }, { "octocap_bone_info_t", typeof(BoneInfo) },
             { "octocap_camera_t", typeof(CameraData) }, { "octocap_session_config_t", typeof(SessionConfig) },
             { "octocap_subscriber_config_t", typeof(SubscriberConfig) }, { "octocap_stream_info_t", typeof(StreamInfo) },
+            { "octocap_detector_config_t", typeof(DetectorConfig) }, { "octocap_image_t", typeof(Image) },
+            { "octocap_detect_info_t", typeof(DetectInfo) },
         };
 
         static string Pascal(string snake)

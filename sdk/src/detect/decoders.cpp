@@ -78,7 +78,7 @@ std::vector<DetectedPerson> decode_movenet(const Tensor& t, int in_width, int in
   p.keypoints.resize(K);
   for (size_t k = 0; k < K; ++k) {
     const float* v = &t.data[k * 3];
-    p.keypoints[k] = {v[1] * in_width, v[0] * in_height, v[2]};
+    p.keypoints[k] = {v[1] * in_width - 0.5, v[0] * in_height - 0.5, v[2]};  // normalised -> pixel centres
   }
   p.score = mean_score(p.keypoints);
   p.box = keypoint_box(p.keypoints, 0.2);
@@ -98,7 +98,8 @@ std::vector<DetectedPerson> decode_movenet_multipose(const Tensor& t, int in_wid
     if (!(score >= min_score)) continue;
     DetectedPerson p;
     p.keypoints.resize(K);
-    for (size_t k = 0; k < K; ++k) p.keypoints[k] = {v[3 * k + 1] * in_width, v[3 * k] * in_height, v[3 * k + 2]};
+    for (size_t k = 0; k < K; ++k)
+      p.keypoints[k] = {v[3 * k + 1] * in_width - 0.5, v[3 * k] * in_height - 0.5, v[3 * k + 2]};
     p.score = score;
     const float* b = v + 3 * K;  // ymin, xmin, ymax, xmax
     p.box = {b[1] * in_width, b[0] * in_height, (b[3] - b[1]) * in_width, (b[2] - b[0]) * in_height};

@@ -157,6 +157,15 @@ std::vector<std::vector<DetectedPerson>> Detector::detect(const std::vector<Imag
       last_boxes_[v] = result[v].empty() ? Rect{} : keypoint_box(result[v][0].keypoints, config_.min_confidence);
     }
   }
+  // A single-person model always answers with someone; fewer than three confident keypoints is nobody.
+  for (auto& people : result)
+    people.erase(std::remove_if(people.begin(), people.end(),
+                                [&](const DetectedPerson& p) {
+                                  int confident = 0;
+                                  for (const Keypoint2D& k : p.keypoints) confident += k.confidence >= config_.min_confidence;
+                                  return confident < 3;
+                                }),
+                 people.end());
   for (size_t v = 0; v < result.size(); ++v)
     pick_people(result[v], config_.pick, v < hints_.size() ? hints_[v] : Person2D{}, config_.max_people,
                 config_.min_confidence);

@@ -55,10 +55,11 @@ void draw_letterboxed(const ImageView& image, const Rect& src_rect, const Rect& 
   const double sx1 = std::min<double>(image.width, src_rect.x + src_rect.width);
   const double sy1 = std::min<double>(image.height, src_rect.y + src_rect.height);
   if (sx1 <= sx0 || sy1 <= sy0) return;
-  const int dx0 = std::max<int>(static_cast<int>(std::lround(box.to_dest_x(sx0))), static_cast<int>(dst_rect.x));
-  const int dy0 = std::max<int>(static_cast<int>(std::lround(box.to_dest_y(sy0))), static_cast<int>(dst_rect.y));
-  const int dx1 = std::min<int>(static_cast<int>(std::lround(box.to_dest_x(sx1))), static_cast<int>(dst_rect.x + dst_rect.width));
-  const int dy1 = std::min<int>(static_cast<int>(std::lround(box.to_dest_y(sy1))), static_cast<int>(dst_rect.y + dst_rect.height));
+  // Continuous edges: sx0..sx1 land on sx * scale + offset.
+  const int dx0 = std::max<int>(static_cast<int>(std::lround(sx0 * box.scale + box.offset_x)), static_cast<int>(dst_rect.x));
+  const int dy0 = std::max<int>(static_cast<int>(std::lround(sy0 * box.scale + box.offset_y)), static_cast<int>(dst_rect.y));
+  const int dx1 = std::min<int>(static_cast<int>(std::lround(sx1 * box.scale + box.offset_x)), static_cast<int>(dst_rect.x + dst_rect.width));
+  const int dy1 = std::min<int>(static_cast<int>(std::lround(sy1 * box.scale + box.offset_y)), static_cast<int>(dst_rect.y + dst_rect.height));
   if (dx1 <= dx0 || dy1 <= dy0) return;
 
   const int type = image.format == PixelFormat::rgba8 ? CV_8UC4 : CV_8UC3;
@@ -70,9 +71,9 @@ void draw_letterboxed(const ImageView& image, const Rect& src_rect, const Rect& 
   for (int r = 0; r < roi.rows; ++r) {
     float* mx = map_x.ptr<float>(r);
     float* my = map_y.ptr<float>(r);
-    const double sy = box.to_source_y(dy0 + r + 0.5) - 0.5;
+    const double sy = box.to_source_y(dy0 + r);
     for (int c = 0; c < roi.cols; ++c) {
-      mx[c] = static_cast<float>(box.to_source_x(dx0 + c + 0.5) - 0.5);
+      mx[c] = static_cast<float>(box.to_source_x(dx0 + c));
       my[c] = static_cast<float>(sy);
     }
   }

@@ -20,13 +20,15 @@ int bytes_per_pixel(PixelFormat f);
 void validate_image(const ImageView& image, const char* what);
 
 // A rectangle of a source image scaled uniformly (aspect kept) and centred in a destination rectangle.
-// dst = src * scale + offset; the inverse maps detections back to source pixels.
+// In continuous coordinates (pixel i covers [i, i+1)): dst = src * scale + offset. Keypoints use OpenPose's
+// convention, pixel i's centre at i, so the mappings below shift by half a pixel on each side; without it every
+// back-mapped keypoint would be off by (1/scale - 1) / 2 pixels.
 struct Letterbox {
   double scale = 1, offset_x = 0, offset_y = 0;
-  double to_source_x(double x) const { return (x - offset_x) / scale; }
-  double to_source_y(double y) const { return (y - offset_y) / scale; }
-  double to_dest_x(double x) const { return x * scale + offset_x; }
-  double to_dest_y(double y) const { return y * scale + offset_y; }
+  double to_source_x(double x) const { return (x + 0.5 - offset_x) / scale - 0.5; }
+  double to_source_y(double y) const { return (y + 0.5 - offset_y) / scale - 0.5; }
+  double to_dest_x(double x) const { return (x + 0.5) * scale + offset_x - 0.5; }
+  double to_dest_y(double y) const { return (y + 0.5) * scale + offset_y - 0.5; }
 };
 
 struct Rect {

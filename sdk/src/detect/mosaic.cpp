@@ -23,13 +23,14 @@ MosaicLayout plan_mosaic(const std::vector<ViewSize>& views, int tile_width, int
               static_cast<double>(tile_width), static_cast<double>(tile_height)};
     const Rect whole{0, 0, static_cast<double>(views[i].width), static_cast<double>(views[i].height)};
     t.box = fit_letterbox(whole, t.cell);
-    t.content = {t.box.to_dest_x(0), t.box.to_dest_y(0), views[i].width * t.box.scale, views[i].height * t.box.scale};
+    t.content = {t.box.offset_x, t.box.offset_y, views[i].width * t.box.scale, views[i].height * t.box.scale};
     layout.tiles.push_back(t);
   }
   return layout;
 }
 
 int tile_at(const MosaicLayout& layout, double x, double y) {
+  x += 0.5, y += 0.5;  // pixel-centre coordinates to continuous ones, as the content rectangles are
   for (size_t i = 0; i < layout.tiles.size(); ++i) {
     const Rect& c = layout.tiles[i].content;
     if (x >= c.x && x < c.x + c.width && y >= c.y && y < c.y + c.height) return static_cast<int>(i);

@@ -10,7 +10,7 @@ namespace octocap {
 
 struct MosaicTile {
   Rect cell;     // the tile in the mosaic
-  Rect content;  // where the view's pixels land inside the cell (the rest is padding)
+  Rect content;  // where the view's pixels land inside the cell, continuous coordinates (the rest is padding)
   Letterbox box; // view pixels <-> mosaic pixels
 };
 
@@ -25,7 +25,7 @@ struct ViewSize {
 
 // A grid of ceil(sqrt(N)) columns of tile_width x tile_height cells; each view is letterboxed into its cell.
 MosaicLayout plan_mosaic(const std::vector<ViewSize>& views, int tile_width, int tile_height);
-// The view whose content holds mosaic point (x, y), or -1 (padding or outside).
+// The view whose content holds mosaic point (x, y) (pixel centres at integers), or -1 (padding or outside).
 int tile_at(const MosaicLayout& layout, double x, double y);
 
 // People found in the mosaic, given to the views their keypoints fell in: each person goes to the tile holding

@@ -1,0 +1,121 @@
+// Images in, 3D out: Pose2Sim's real 4-camera demo videos through octocap_session_solve_images, compared with the
+// reprojection error and with Pose2Sim's own 3D of the same take (its output, not ground truth).
+#include <catch2/catch_test_macros.hpp>
+#include <algorithm>
+#include <cmath>
+#include <opencv2/videoio.hpp>
+#include <string>
+#include <vector>
+
+#include "io/motion_files.h"
+#include "octocap/octocap.h"
+#include "support/capi_helpers.h"
+
+namespace {
+
+const std::string kVideos = std::string(OCTOCAP_SOURCE_DIR) + "/.cache/pose2sim-0.10.49/Demo_SinglePerson/videos/";
+const std::string kDemo = std::string(OCTOCAP_REAL_DATA_DIR) + "/Demo";
+
+testing::Calib load_demo_calibration() {
+  octocap_calibration_t* c = nullptr;
+  REQUIRE(octocap_calibration_load((kDemo + "/calibration/Calib_qualisys.toml").c_str(), &c) == OCTOCAP_OK);
+  return testing::Calib(c);
+}
+
+double median(std::vector<double> v) {
+  REQUIRE(!v.empty());
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+}  // namespace
+
+TEST_CASE("solving real multi-camera videos from images matches Pose2Sim's reprojection and 3D") {
+  testing::Calib calib = load_demo_calibration();
+  std::vector<cv::VideoCapture> videos;
+  for (int c = 1; c <= 4; ++c) {
+    videos.emplace_back(kVideos + "cam0" + std::to_string(c) + ".mp4");
+    REQUIRE(videos.back().isOpened());
+  }
+  const octocap::MotionTrack reference = octocap::read_trc(kDemo + "/opensim/Balancing_for_IK.trc");
+  std::vector<int> ref_index(17, -1);
+  for (uint32_t k = 0; k < 17; ++k)
+    for (size_t m = 0; m < reference.markers.size(); ++m)
+      if (reference.markers[m] == octocap_layout_keypoint_name(OCTOCAP_LAYOUT_COCO_17, k)) ref_index[k] = static_cast<int>(m);
+
+  for (octocap_detect_mode_t mode : {OCTOCAP_DETECT_CROP, OCTOCAP_DETECT_MOSAIC}) {
+    INFO("detect mode " << mode);
+    octocap_session_config_t cfg;
+    octocap_session_config_init(&cfg);
+    cfg.layout = OCTOCAP_LAYOUT_COCO_17;
+    cfg.filter = OCTOCAP_FILTER_NONE;
+    cfg.detector.mode = mode;
+    cfg.detector.threads = 1;
+    testing::Session s = testing::make_session(calib.get(), cfg);
+    for (auto& v : videos) v.set(cv::CAP_PROP_POS_FRAMES, 0);
+    const int frames = 12;
+    std::vector<double> reproj, to_pose2sim;
+    size_t solved = 0;
+    for (int f = 0; f < frames; ++f) {
+      std::vector<cv::Mat> images(4);
+      std::vector<octocap_image_t> views;
+      for (int c = 0; c < 4; ++c) {
+        REQUIRE(videos[c].read(images[c]));
+        views.push_back({images[c].data, static_cast<uint32_t>(images[c].cols), static_cast<uint32_t>(images[c].rows),
+                         static_cast<uint32_t>(images[c].step[0]), OCTOCAP_PIXELS_BGR8});
+      }
+      REQUIRE(octocap_session_solve_images(s.get(), views.data(), 4, f * 16667) == OCTOCAP_OK);
+      uint32_t n = 0;
+      REQUIRE(octocap_session_detections(s.get(), 0, nullptr, 0, &n) == OCTOCAP_OK);
+      CHECK(n >= 17);  // the person is seen by camera 1 in every frame
+      octocap_joint_t j[17];
+      REQUIRE(octocap_session_get_keypoints3d(s.get(), j, 17, &n) == OCTOCAP_OK);
+      for (int k = 0; k < 17; ++k) {
+        if (!j[k].valid) continue;
+        ++solved;
+        reproj.push_back(j[k].reprojection_error_px);
+        if (ref_index[k] < 0) continue;
+        const Eigen::Vector3d ours = octocap::zup_to_yup({j[k].position[0], j[k].position[1], j[k].position[2]});
+        const Eigen::Vector3d theirs = reference.frames[f][ref_index[k]];
+        if (theirs.allFinite()) to_pose2sim.push_back((ours - theirs).norm());
+      }
+    }
+    const double med_px = median(reproj), med_mm = 1000 * median(to_pose2sim);
+    INFO("solved " << solved << "/" << frames * 17 << ", median reprojection " << med_px << " px, median distance to "
+                   "Pose2Sim " << med_mm << " mm");
+    CHECK(solved >= 0.9 * frames * 17);
+    CHECK(med_px <= 10.7);  // Pose2Sim's median on this take
+    CHECK(med_mm < 60.0);   // COCO hips and shoulders sit a few cm from OpenPose BODY_25B's
+    octocap_detect_info_t info{};
+    info.struct_size = sizeof info;
+    REQUIRE(octocap_session_detect_info(s.get(), &info) == OCTOCAP_OK);
+    CHECK(info.inferences == (mode == OCTOCAP_DETECT_MOSAIC ? 1u : 4u));  // crops: one each once tracking
+  }
+}
+
+TEST_CASE("solve_images refuses what it cannot do, clearly") {
+  testing::Calib calib = load_demo_calibration();
+  octocap_session_config_t cfg;
+  octocap_session_config_init(&cfg);  // BODY_25: the shipped models give COCO_17
+  testing::Session s = testing::make_session(calib.get(), cfg);
+  std::vector<uint8_t> pixels(64 * 48 * 3, 0);
+  std::vector<octocap_image_t> views(4, octocap_image_t{pixels.data(), 64, 48, 64 * 3, OCTOCAP_PIXELS_RGB8});
+  CHECK(octocap_session_solve_images(s.get(), views.data(), 4, 0) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  CHECK(std::string(octocap_last_error()).find("COCO_17") != std::string::npos);
+  CHECK(octocap_session_solve_images(s.get(), views.data(), 3, 0) == OCTOCAP_ERROR_CAMERA_MISMATCH);
+  uint32_t n = 0;
+  CHECK(octocap_session_detections(s.get(), 0, nullptr, 0, &n) == OCTOCAP_ERROR_NO_RESULT);
+
+  cfg.layout = OCTOCAP_LAYOUT_COCO_17;
+  testing::Session coco = testing::make_session(calib.get(), cfg);
+  // Black frames: nobody anywhere, reported as too few views, and the session stays usable.
+  CHECK(octocap_session_solve_images(coco.get(), views.data(), 4, 0) == OCTOCAP_ERROR_NOT_ENOUGH_VIEWS);
+  REQUIRE(octocap_session_detections(coco.get(), 2, nullptr, 0, &n) == OCTOCAP_OK);
+  CHECK(n == 0);
+  views[1].stride_bytes = 10;
+  CHECK(octocap_session_solve_images(coco.get(), views.data(), 4, 1) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  CHECK(std::string(octocap_last_error()).find("image 1") != std::string::npos);
+  cfg.detector.struct_size = 3;
+  octocap_session_t* bad = nullptr;
+  CHECK(octocap_session_create(&cfg, calib.get(), &bad) == OCTOCAP_ERROR_STRUCT_SIZE);
+}

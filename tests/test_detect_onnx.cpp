@@ -1,0 +1,315 @@
+// The ONNX path through the C ABI: a tiny model made here (known output for a known input), bad input, and the
+// shipped models on real photos of people (hand-marked boxes below, from looking at the photos).
+#include <catch2/catch_test_macros.hpp>
+#include <cmath>
+#include <cstring>
+#include <memory>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <string>
+#include <vector>
+
+#include "octocap/octocap.h"
+#include "support/onnx_writer.h"
+#include "support/temp_dir.h"
+
+namespace {
+
+struct DetectorDeleter {
+  void operator()(octocap_detector_t* d) const { octocap_detector_destroy(d); }
+};
+using Detector = std::unique_ptr<octocap_detector_t, DetectorDeleter>;
+
+const std::string kPhotos = std::string(OCTOCAP_SOURCE_DIR) + "/.cache/photos/";
+
+octocap_result_t create(const std::string& model, octocap_detect_mode_t mode, Detector& out) {
+  octocap_detector_config_t cfg;
+  octocap_detector_config_init(&cfg);
+  std::snprintf(cfg.model, sizeof cfg.model, "%s", model.c_str());
+  cfg.mode = mode;
+  cfg.threads = 1;
+  octocap_detector_t* d = nullptr;
+  const octocap_result_t r = octocap_detector_create(&cfg, &d);
+  out.reset(d);
+  return r;
+}
+
+octocap_image_t image_of(const cv::Mat& bgr) {
+  return {bgr.data, static_cast<uint32_t>(bgr.cols), static_cast<uint32_t>(bgr.rows), static_cast<uint32_t>(bgr.step[0]),
+          OCTOCAP_PIXELS_BGR8};
+}
+
+std::vector<std::vector<octocap_keypoint2d_t>> people_of(octocap_detector_t* d, uint32_t view) {
+  uint32_t n = 0;
+  REQUIRE(octocap_detector_people(d, view, &n) == OCTOCAP_OK);
+  std::vector<std::vector<octocap_keypoint2d_t>> out(n, std::vector<octocap_keypoint2d_t>(17));
+  for (uint32_t p = 0; p < n; ++p) {
+    uint32_t count = 0;
+    REQUIRE(octocap_detector_keypoints(d, view, p, out[p].data(), 17, &count) == OCTOCAP_OK);
+    REQUIRE(count == 17);
+  }
+  return out;
+}
+
+// The tiny model: 17 heatmaps = a 1x1 convolution of the input; even keypoints follow red, odd ones green.
+struct TinyModel {
+  testing::TempDir dir;
+  std::string path = dir.file("tiny.onnx");
+  explicit TinyModel(int channels = 17, const std::string& card_kind = "heatmap") {
+    std::vector<float> w;
+    for (int k = 0; k < channels; ++k) w.insert(w.end(), {k % 2 == 0 ? 1.f : 0.f, k % 2 == 1 ? 1.f : 0.f, 0.f});
+    testing::write_conv1x1_model(path, 32, 32, channels, w);
+    dir.write("tiny.json", R"({"name": "tiny", "keypoint_layout": "COCO_17",
+      "input": {"width": 32, "height": 32, "element_type": "float32", "tensor_layout": "NCHW", "channel_order": "RGB",
+                "mean": [0, 0, 0], "scale": [0.00392157, 0.00392157, 0.00392157]},
+      "output": {"kind": ")" + card_kind + R"(", "max_people": 1}})");
+  }
+};
+
+// 64x64 black image (BGR) with a red blob at (20, 44) and a green one at (50, 12), Gaussian, sigma 3 px.
+cv::Mat blob_image() {
+  cv::Mat im(64, 64, CV_8UC3, cv::Scalar(0, 0, 0));
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x) {
+      auto g = [&](double cx, double cy) { return 255 * std::exp(-((x - cx) * (x - cx) + (y - cy) * (y - cy)) / 18.0); };
+      im.at<cv::Vec3b>(y, x) = cv::Vec3b(0, static_cast<uint8_t>(g(50, 12)), static_cast<uint8_t>(g(20, 44)));
+    }
+  return im;
+}
+
+void check_blobs(octocap_detector_t* d) {
+  const auto people = people_of(d, 0);
+  REQUIRE(people.size() == 1);
+  for (int k = 0; k < 17; ++k) {
+    INFO("keypoint " << k << " at " << people[0][k].x << ", " << people[0][k].y);
+    const double tx = k % 2 == 0 ? 20 : 50, ty = k % 2 == 0 ? 44 : 12;
+    CHECK(std::abs(people[0][k].x - tx) < 1.0);
+    CHECK(std::abs(people[0][k].y - ty) < 1.0);
+    CHECK(people[0][k].confidence > 0.8);
+  }
+}
+
+// Mean y of the given keypoints that have confidence; NaN when none.
+double mean_y(const std::vector<octocap_keypoint2d_t>& p, std::initializer_list<int> ks) {
+  double s = 0;
+  int n = 0;
+  for (int k : ks)
+    if (p[k].confidence >= 0.3) s += p[k].y, ++n;
+  return n ? s / n : NAN;
+}
+
+// Eyes above shoulders above hips above knees above ankles, wherever both ends are visible.
+void check_body_order(const std::vector<octocap_keypoint2d_t>& p) {
+  const double levels[] = {mean_y(p, {1, 2}), mean_y(p, {5, 6}), mean_y(p, {11, 12}), mean_y(p, {13, 14}), mean_y(p, {15, 16})};
+  for (int a = 0; a < 5; ++a)
+    for (int b = a + 1; b < 5; ++b)
+      if (!std::isnan(levels[a]) && !std::isnan(levels[b])) CHECK(levels[a] < levels[b]);
+}
+
+struct Box {
+  double x0, y0, x1, y1;
+  bool holds(const octocap_keypoint2d_t& k) const { return k.x >= x0 && k.x <= x1 && k.y >= y0 && k.y <= y1; }
+};
+
+// Every confident keypoint of the person lies in one of the hand-marked boxes; returns which, or -1.
+int box_of(const std::vector<octocap_keypoint2d_t>& p, const std::vector<Box>& boxes) {
+  for (size_t b = 0; b < boxes.size(); ++b) {
+    int in = 0, confident = 0;
+    for (const auto& k : p)
+      if (k.confidence >= 0.3) ++confident, in += boxes[b].holds(k);
+    if (confident >= 3 && in == confident) return static_cast<int>(b);
+  }
+  return -1;
+}
+
+// Hand-marked on the photos (pixels): whole people, generous by a few pixels.
+const std::vector<Box> kBusPeople = {{40, 390, 255, 910}, {220, 395, 355, 870}, {660, 395, 810, 890}, {0, 550, 85, 875}};
+const std::vector<Box> kZidanePeople = {{115, 190, 1165, 720}, {745, 35, 1160, 720}};
+const Box kAstronautHead{145, 10, 305, 185};
+const Box kAstronautBody{10, 10, 375, 512};
+
+}  // namespace
+
+TEST_CASE("a tiny ONNX model made here gives its known answer through the detector") {
+  TinyModel model;
+  Detector d;
+  REQUIRE(create(model.path, OCTOCAP_DETECT_PER_VIEW, d) == OCTOCAP_OK);
+  octocap_detect_info_t info{};
+  info.struct_size = sizeof info;
+  const cv::Mat bgr = blob_image();
+  octocap_image_t im = image_of(bgr);
+  REQUIRE(octocap_detector_run(d.get(), &im, 1) == OCTOCAP_OK);
+  check_blobs(d.get());
+  REQUIRE(octocap_detector_info(d.get(), &info) == OCTOCAP_OK);
+  CHECK(info.inferences == 1);
+  CHECK(info.layout == OCTOCAP_LAYOUT_COCO_17);
+  CHECK(std::string(info.model) == "tiny");
+
+  SECTION("RGB and RGBA pixels, padded rows") {
+    cv::Mat rgb, rgba;
+    cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
+    cv::cvtColor(bgr, rgba, cv::COLOR_BGR2RGBA);
+    cv::Mat padded(64, 80 * 4, CV_8UC1, cv::Scalar(77));  // rows of 320 bytes holding 64 RGBA pixels
+    rgba.copyTo(cv::Mat(64, 64, CV_8UC4, padded.data, 320));
+    octocap_image_t a = {rgb.data, 64, 64, static_cast<uint32_t>(rgb.step[0]), OCTOCAP_PIXELS_RGB8};
+    REQUIRE(octocap_detector_run(d.get(), &a, 1) == OCTOCAP_OK);
+    check_blobs(d.get());
+    octocap_image_t b = {padded.data, 64, 64, 320, OCTOCAP_PIXELS_RGBA8};
+    REQUIRE(octocap_detector_run(d.get(), &b, 1) == OCTOCAP_OK);
+    check_blobs(d.get());
+  }
+  SECTION("a crop of a bigger picture maps back to that picture's pixels") {
+    cv::Mat big(300, 400, CV_8UC3, cv::Scalar(0, 0, 0));
+    bgr.copyTo(big(cv::Rect(150, 100, 64, 64)));
+    octocap_image_t b = image_of(big);
+    REQUIRE(octocap_detector_run(d.get(), &b, 1) == OCTOCAP_OK);
+    const auto people = people_of(d.get(), 0);
+    REQUIRE(people.size() == 1);
+    // 400x300 letterboxed into 32x32 is a 12.5x reduction: a pixel of the input is 12.5 of the picture.
+    CHECK(std::abs(people[0][0].x - 170) < 7);
+    CHECK(std::abs(people[0][0].y - 144) < 7);
+  }
+}
+
+TEST_CASE("detector bad input gives clear errors") {
+  TinyModel model;
+  Detector d;
+  REQUIRE(create(model.path, OCTOCAP_DETECT_PER_VIEW, d) == OCTOCAP_OK);
+  const cv::Mat bgr = blob_image();
+  auto run_with = [&](octocap_image_t im) { return octocap_detector_run(d.get(), &im, 1); };
+  auto last = [] { return std::string(octocap_last_error()); };
+
+  octocap_image_t ok = image_of(bgr);
+  octocap_image_t im = ok;
+  im.stride_bytes = 100;  // shorter than 64 x 3
+  CHECK(run_with(im) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  CHECK(last().find("stride") != std::string::npos);
+  im = ok;
+  im.pixels = nullptr;
+  CHECK(run_with(im) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  CHECK(last().find("NULL") != std::string::npos);
+  im = ok;
+  im.width = 0;
+  CHECK(run_with(im) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  CHECK(last().find("empty") != std::string::npos);
+  im = ok;
+  im.format = 7;
+  CHECK(run_with(im) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  CHECK(last().find("pixel format") != std::string::npos);
+  CHECK(octocap_detector_run(d.get(), nullptr, 1) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  CHECK(octocap_detector_run(d.get(), &ok, 0) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  uint32_t n = 0;
+  CHECK(octocap_detector_people(d.get(), 3, &n) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+
+  // A missing model, a missing card, a malformed card.
+  Detector other;
+  CHECK(create(model.dir.file("absent.onnx"), OCTOCAP_DETECT_PER_VIEW, other) == OCTOCAP_ERROR_IO);
+  CHECK(last().find("absent") != std::string::npos);
+  CHECK(other == nullptr);
+  testing::write_conv1x1_model(model.dir.file("nocard.onnx"), 32, 32, 17, std::vector<float>(51, 0.f));
+  CHECK(create(model.dir.file("nocard.onnx"), OCTOCAP_DETECT_PER_VIEW, other) == OCTOCAP_ERROR_IO);
+  CHECK(last().find("model card") != std::string::npos);
+  model.dir.write("bad.json", R"({"name": "bad", "keypoint_layout": "COCO_17", "input": {"width": 32}})");
+  testing::write_conv1x1_model(model.dir.file("bad.onnx"), 32, 32, 17, std::vector<float>(51, 0.f));
+  CHECK(create(model.dir.file("bad.onnx"), OCTOCAP_DETECT_PER_VIEW, other) == OCTOCAP_ERROR_PARSE);
+  CHECK(last().find("height") != std::string::npos);
+  // A file that is not an ONNX model at all.
+  model.dir.write("junk.onnx", "this is not protobuf");
+  model.dir.write("junk.json", R"({"name": "junk", "keypoint_layout": "COCO_17", "input": {"width": 32, "height": 32,
+    "element_type": "float32", "tensor_layout": "NCHW", "channel_order": "RGB"}, "output": {"kind": "heatmap"}})");
+  CHECK(create(model.dir.file("junk.onnx"), OCTOCAP_DETECT_PER_VIEW, other) == OCTOCAP_ERROR_PARSE);
+  // The card's element type differs from the model's.
+  model.dir.write("tiny_int.json", R"({"name": "x", "keypoint_layout": "COCO_17", "input": {"width": 32, "height": 32,
+    "element_type": "int32", "tensor_layout": "NCHW", "channel_order": "RGB"}, "output": {"kind": "heatmap"}})");
+  testing::write_conv1x1_model(model.dir.file("tiny_int.onnx"), 32, 32, 17, std::vector<float>(51, 0.f));
+  CHECK(create(model.dir.file("tiny_int.onnx"), OCTOCAP_DETECT_PER_VIEW, other) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  CHECK(last().find("element type") != std::string::npos);
+  // The mosaic needs a multi-person model.
+  CHECK(create(model.path, OCTOCAP_DETECT_MOSAIC, other) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  CHECK(last().find("multi-person") != std::string::npos);
+
+  // A model whose output does not have the shape its card promises: refused at the first run, not guessed at.
+  TinyModel five(5);
+  REQUIRE(create(five.path, OCTOCAP_DETECT_PER_VIEW, other) == OCTOCAP_OK);
+  CHECK(octocap_detector_run(other.get(), &ok, 1) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  CHECK(last().find("expected [1,17") != std::string::npos);
+
+  // A destroyed handle.
+  octocap_detector_t* raw = other.release();
+  octocap_detector_destroy(raw);
+  CHECK(octocap_detector_run(raw, &ok, 1) == OCTOCAP_ERROR_INVALID_HANDLE);
+  octocap_detector_config_t cfg;
+  octocap_detector_config_init(&cfg);
+  cfg.struct_size = 12;
+  octocap_detector_t* none = nullptr;
+  CHECK(octocap_detector_create(&cfg, &none) == OCTOCAP_ERROR_STRUCT_SIZE);
+  CHECK(none == nullptr);
+}
+
+TEST_CASE("MoveNet Thunder on a real portrait: face in the head, eyes above shoulders") {
+  const cv::Mat photo = cv::imread(kPhotos + "astronaut.png", cv::IMREAD_COLOR);
+  REQUIRE(!photo.empty());
+  Detector d;
+  REQUIRE(create("movenet-thunder", OCTOCAP_DETECT_PER_VIEW, d) == OCTOCAP_OK);
+  octocap_image_t im = image_of(photo);
+  REQUIRE(octocap_detector_run(d.get(), &im, 1) == OCTOCAP_OK);
+  const auto people = people_of(d.get(), 0);
+  REQUIRE(people.size() == 1);
+  const auto& p = people[0];
+  for (int k = 0; k <= 4; ++k) {  // nose, eyes, ears
+    INFO("face keypoint " << k << " at " << p[k].x << ", " << p[k].y);
+    CHECK(p[k].confidence >= 0.3);
+    CHECK(kAstronautHead.holds(p[k]));
+  }
+  for (const auto& k : p)
+    if (k.confidence >= 0.3) CHECK(kAstronautBody.holds(k));
+  CHECK(p[1].x > p[2].x);  // her left eye (LEye) is on the image's right
+  check_body_order(p);
+}
+
+TEST_CASE("MoveNet MultiPose on real street and sideline photos: people in their hand-marked boxes") {
+  Detector d;
+  REQUIRE(create("movenet-multipose", OCTOCAP_DETECT_PER_VIEW, d) == OCTOCAP_OK);
+  const cv::Mat bus = cv::imread(kPhotos + "bus.jpg", cv::IMREAD_COLOR), zidane = cv::imread(kPhotos + "zidane.jpg", cv::IMREAD_COLOR);
+  REQUIRE((!bus.empty() && !zidane.empty()));
+  const octocap_image_t images[2] = {image_of(bus), image_of(zidane)};
+  REQUIRE(octocap_detector_run(d.get(), images, 2) == OCTOCAP_OK);
+
+  const auto on_bus = people_of(d.get(), 0);
+  std::vector<int> found(kBusPeople.size(), 0);
+  for (const auto& p : on_bus) {
+    const int b = box_of(p, kBusPeople);
+    CHECK(b >= 0);
+    if (b >= 0) ++found[b];
+    check_body_order(p);
+  }
+  CHECK(found[0] == 1);  // both people in full view, once each
+  CHECK(found[1] == 1);
+  const auto on_pitch = people_of(d.get(), 1);
+  CHECK(on_pitch.size() >= 2);
+  for (const auto& p : on_pitch) CHECK(box_of(p, kZidanePeople) >= 0);
+}
+
+TEST_CASE("the mosaic of three real photos maps every person back into its own photo") {
+  Detector d;
+  REQUIRE(create("", OCTOCAP_DETECT_MOSAIC, d) == OCTOCAP_OK);  // default: movenet-multipose
+  const cv::Mat bus = cv::imread(kPhotos + "bus.jpg", cv::IMREAD_COLOR);
+  const cv::Mat zidane = cv::imread(kPhotos + "zidane.jpg", cv::IMREAD_COLOR);
+  const cv::Mat astronaut = cv::imread(kPhotos + "astronaut.png", cv::IMREAD_COLOR);
+  const octocap_image_t images[3] = {image_of(bus), image_of(zidane), image_of(astronaut)};
+  REQUIRE(octocap_detector_run(d.get(), images, 3) == OCTOCAP_OK);
+  octocap_detect_info_t info{};
+  info.struct_size = sizeof info;
+  REQUIRE(octocap_detector_info(d.get(), &info) == OCTOCAP_OK);
+  CHECK(info.inferences == 1);
+  const auto on_bus = people_of(d.get(), 0);
+  CHECK(!on_bus.empty());
+  for (const auto& p : on_bus) CHECK(box_of(p, kBusPeople) >= 0);
+  const auto on_pitch = people_of(d.get(), 1);
+  CHECK(!on_pitch.empty());
+  for (const auto& p : on_pitch) CHECK(box_of(p, kZidanePeople) >= 0);
+  const auto astro = people_of(d.get(), 2);
+  REQUIRE(!astro.empty());
+  CHECK(box_of(astro[0], {kAstronautBody}) == 0);
+  CHECK(kAstronautHead.holds(astro[0][0]));  // the nose
+}
