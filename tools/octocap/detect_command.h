@@ -7,7 +7,7 @@
 // Detector options shared by `octocap detect` and `octocap solve --images`.
 struct DetectorOptions {
   std::string model;  // empty: the mode's default
-  std::string mode = "per-view";
+  std::string mode = "crop";
   std::string pick = "all";
   unsigned threads = 0;
   unsigned mosaic_tile = 256;

@@ -338,7 +338,7 @@ typedef struct octocap_detector_config_t {
                                         "movenet-multipose") looked up in $OCTOCAP_MODELS_DIR, else the build's
                                         models directory. Empty (default): movenet-thunder, or movenet-multipose
                                         for the mosaic. */
-  octocap_detect_mode_t mode;      /**< Default ::OCTOCAP_DETECT_PER_VIEW. */
+  octocap_detect_mode_t mode;      /**< Default ::OCTOCAP_DETECT_CROP (measured: most keypoints, closest 3D). */
   octocap_person_pick_t person_pick; /**< Default ::OCTOCAP_PICK_ALL. */
   uint32_t threads;                /**< ONNX Runtime intra-op threads; 0 = all cores. Default 0. */
   uint32_t mosaic_tile_px;         /**< Mosaic: height of each view's tile (the width follows the views' aspect). Default 256. */

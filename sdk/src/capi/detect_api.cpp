@@ -91,7 +91,7 @@ void octocap_detector_config_init(octocap_detector_config_t* c) {
   if (!c) return;
   *c = octocap_detector_config_t{};
   c->struct_size = sizeof(octocap_detector_config_t);
-  c->mode = OCTOCAP_DETECT_PER_VIEW;
+  c->mode = OCTOCAP_DETECT_CROP;  // the most accurate path at per-view cost (README "Detecting")
   c->person_pick = OCTOCAP_PICK_ALL;
   c->threads = 0;
   c->mosaic_tile_px = 256;

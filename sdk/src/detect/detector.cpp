@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <dlfcn.h>
+#include <sys/stat.h>
 
 #include "core/error.h"
 #include "core/layout.h"
@@ -39,7 +41,17 @@ Rect crop_around(const Rect& box, double aspect) {
 
 std::string models_directory() {
   const char* env = std::getenv("OCTOCAP_MODELS_DIR");
-  return env && *env ? std::string(env) : std::string(OCTOCAP_DEFAULT_MODELS_DIR);
+  if (env && *env) return env;
+  struct stat st {};
+  if (stat(OCTOCAP_DEFAULT_MODELS_DIR, &st) == 0 && S_ISDIR(st.st_mode)) return OCTOCAP_DEFAULT_MODELS_DIR;
+  // An installed library: <prefix>/lib/liboctocap.so -> <prefix>/share/octocap/models.
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&models_directory), &info) && info.dli_fname) {
+    std::string lib = info.dli_fname;
+    const size_t slash = lib.find_last_of('/');
+    if (slash != std::string::npos) return lib.substr(0, slash) + "/../share/octocap/models";
+  }
+  return OCTOCAP_DEFAULT_MODELS_DIR;
 }
 
 std::string resolve_model_path(const std::string& model, DetectMode mode) {

@@ -20,7 +20,7 @@ enum class DetectMode : int { per_view = 0, mosaic = 1, crop = 2 };
 
 struct DetectorConfig {
   std::string model;  // a path to a .onnx (its card beside it) or a shipped model's name; empty: the mode's default
-  DetectMode mode = DetectMode::per_view;
+  DetectMode mode = DetectMode::crop;
   PersonPick pick = PersonPick::all;
   int threads = 0;           // ONNX Runtime intra-op threads; 0 = its default
   int mosaic_tile = 256;     // mosaic cell height in pixels (the width follows the views' aspect)
