@@ -786,6 +786,30 @@ OCTOCAP_API octocap_result_t octocap_motion_writer_add_empty_frame(octocap_motio
 /** Writes the file and destroys the writer (also on failure). NULL is accepted. */
 OCTOCAP_API octocap_result_t octocap_motion_writer_close(octocap_motion_writer_t* writer);
 
+/** A motion file opened for playback as the paper's skeleton: what drives an avatar from a file. */
+typedef struct octocap_motion_t octocap_motion_t;
+
+/**
+ * Opens a motion file: a TRC or CSV of keypoints (octocap's, Pose2Sim's; the layout is found from the marker
+ * names, a Z-up CSV is turned upright) or a BVH (CMU, Mixamo-style or octocap's own joint names; units found
+ * from the skeleton's size). Fails with OCTOCAP_ERROR_IO, OCTOCAP_ERROR_PARSE (no humanoid skeleton found) or
+ * OCTOCAP_ERROR_INVALID_ARGUMENT (an unknown extension).
+ */
+OCTOCAP_API octocap_result_t octocap_motion_open(const char* path, octocap_motion_t** out);
+/** Destroys a motion; NULL is accepted. */
+OCTOCAP_API void octocap_motion_destroy(octocap_motion_t* motion);
+/** Frame count and frame rate (Hz) of the motion. */
+OCTOCAP_API octocap_result_t octocap_motion_info(const octocap_motion_t* motion, uint32_t* frame_count, double* rate_hz);
+/** The 15 skeleton joints of `frame` (::octocap_joint_id_values order), rig frame (Y up, metres); valid = 0 where
+ *  the file has none. */
+OCTOCAP_API octocap_result_t octocap_motion_joints(const octocap_motion_t* motion, uint32_t frame,
+                                                   octocap_joint_t* out, uint32_t capacity, uint32_t* count);
+/** The bone poses of `frame`, solved from its joints exactly as a session does (anti-spin, relative to the
+ *  T-pose), in the requested coordinate frame. */
+OCTOCAP_API octocap_result_t octocap_motion_bones(const octocap_motion_t* motion, uint32_t frame,
+                                                  octocap_coord_frame_t coord_frame, octocap_bone_pose_t* out,
+                                                  uint32_t capacity, uint32_t* count);
+
 /** @} */
 
 #ifdef __cplusplus

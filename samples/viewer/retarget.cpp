@@ -1,0 +1,236 @@
+#include "retarget.h"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+namespace {
+
+enum class Side { none, left, right };
+
+struct ParsedName {
+  Side side = Side::none;
+  std::string core;  // lowercase tokens without side, prefixes and digits: "upperarm", "forearm", "spine"
+  std::string core_digits;
+};
+
+// "mixamorig:LeftForeArm", "B_UpperArm_Left", "upper_arm.L", "thigh.R", "Bip01 L Thigh", "LeftUpLeg".
+ParsedName parse(const std::string& raw) {
+  std::string name = raw;
+  const size_t cut = name.find_last_of(":|");
+  if (cut != std::string::npos) name = name.substr(cut + 1);
+  std::vector<std::string> tokens;
+  std::string cur;
+  auto flush = [&] {
+    if (!cur.empty()) tokens.push_back(cur);
+    cur.clear();
+  };
+  for (size_t i = 0; i < name.size(); ++i) {
+    const char ch = name[i];
+    if (!std::isalnum(static_cast<unsigned char>(ch))) {
+      flush();
+      continue;
+    }
+    // camelCase boundary: a capital after a lowercase letter or digit starts a token.
+    if (std::isupper(static_cast<unsigned char>(ch)) && i > 0 && (std::islower(static_cast<unsigned char>(name[i - 1])) ||
+                                                                  std::isdigit(static_cast<unsigned char>(name[i - 1]))))
+      flush();
+    cur.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(ch))));
+  }
+  flush();
+  static const char* kNoise[] = {"b", "j", "bn", "def", "org", "mch", "bip01", "bip001", "bip", "mixamorig", "jnt", "bone"};
+  ParsedName p;
+  for (const std::string& t : tokens) {
+    if (t == "l" || t == "left") p.side = Side::left;
+    else if (t == "r" || t == "right") p.side = Side::right;
+    else if (std::find(std::begin(kNoise), std::end(kNoise), t) != std::end(kNoise)) continue;
+    else p.core_digits += t;
+  }
+  for (char ch : p.core_digits)
+    if (!std::isdigit(static_cast<unsigned char>(ch))) p.core.push_back(ch);
+  return p;
+}
+
+struct Wanted {
+  Side side;
+  std::vector<const char*> synonyms;  // in order of preference
+};
+
+Wanted wanted(int bone) {
+  switch (bone) {
+    case OCTOCAP_BONE_ROOT: return {Side::none, {"hips", "hip", "pelvis", "lowerpelvis", "root"}};
+    case OCTOCAP_BONE_TORSO: return {Side::none, {"spine", "lowerspine", "abdomen", "torso", "chest"}};
+    case OCTOCAP_BONE_HEAD: return {Side::none, {"neck", "head"}};
+    case OCTOCAP_BONE_R_SHOULDER: return {Side::right, {"shoulder", "clavicle", "collar", "collarbone"}};
+    case OCTOCAP_BONE_L_SHOULDER: return {Side::left, {"shoulder", "clavicle", "collar", "collarbone"}};
+    case OCTOCAP_BONE_R_UPPER_ARM: return {Side::right, {"arm", "upperarm", "uparm", "humerus"}};
+    case OCTOCAP_BONE_L_UPPER_ARM: return {Side::left, {"arm", "upperarm", "uparm", "humerus"}};
+    case OCTOCAP_BONE_R_LOWER_ARM: return {Side::right, {"forearm", "lowerarm", "loarm", "elbow"}};
+    case OCTOCAP_BONE_L_LOWER_ARM: return {Side::left, {"forearm", "lowerarm", "loarm", "elbow"}};
+    case OCTOCAP_BONE_R_UPPER_LEG: return {Side::right, {"upleg", "upperleg", "thigh", "hip", "femur"}};
+    case OCTOCAP_BONE_L_UPPER_LEG: return {Side::left, {"upleg", "upperleg", "thigh", "hip", "femur"}};
+    case OCTOCAP_BONE_R_LOWER_LEG: return {Side::right, {"leg", "lowerleg", "loleg", "shin", "calf", "knee", "tibia"}};
+    case OCTOCAP_BONE_L_LOWER_LEG: return {Side::left, {"leg", "lowerleg", "loleg", "shin", "calf", "knee", "tibia"}};
+  }
+  return {Side::none, {}};
+}
+
+std::string bone_name(int b) {
+  octocap_bone_info_t info;
+  octocap_bone_info(static_cast<uint32_t>(b), &info);
+  return info.name;
+}
+
+octocap_bone_info_t bone_info(int b) {
+  octocap_bone_info_t info;
+  octocap_bone_info(static_cast<uint32_t>(b), &info);
+  return info;
+}
+
+int descendants(const Character& c, int node) {
+  int n = 0;
+  for (size_t i = static_cast<size_t>(node) + 1; i < c.nodes.size(); ++i) {
+    int p = c.nodes[i].parent;
+    while (p > node) p = c.nodes[p].parent;
+    n += p == node;
+  }
+  return n;
+}
+
+}  // namespace
+
+BoneMap find_bone_map(const Character& c) {
+  BoneMap map;
+  map.fill(-1);
+  std::vector<ParsedName> parsed;
+  for (const auto& n : c.nodes) parsed.push_back(parse(n.name));
+  for (int b = 0; b < OCTOCAP_BONE_COUNT; ++b) {
+    const Wanted w = wanted(b);
+    for (const char* syn : w.synonyms) {
+      for (size_t i = 0; i < c.nodes.size() && map[b] < 0; ++i)
+        if (parsed[i].side == w.side && parsed[i].core == syn) map[b] = static_cast<int>(i);
+      if (map[b] >= 0) break;
+    }
+  }
+  return map;
+}
+
+void apply_bone_map_file(const Character& c, const std::string& path, BoneMap& map) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open bone map " + path);
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(path + ": not JSON: " + e.what());
+  }
+  if (!doc.is_object()) throw std::runtime_error(path + ": expected an object {\"octocap bone\": \"model node\"}");
+  for (const auto& [key, value] : doc.items()) {
+    int bone = -1;
+    for (int b = 0; b < OCTOCAP_BONE_COUNT; ++b)
+      if (bone_name(b) == key) bone = b;
+    if (bone < 0) throw std::runtime_error(path + ": \"" + key + "\" is not an octocap bone (root, torso, head, l_upper_arm, ...)");
+    if (!value.is_string()) throw std::runtime_error(path + ": \"" + key + "\" must name a model node");
+    const int node = c.find(value.get<std::string>());
+    if (node < 0) throw std::runtime_error(path + ": the model has no node \"" + value.get<std::string>() + "\"");
+    map[bone] = node;
+  }
+}
+
+std::string missing_bones(const BoneMap& map) {
+  std::string out;
+  for (int b = 0; b < OCTOCAP_BONE_COUNT; ++b)
+    if (map[b] < 0 && b != OCTOCAP_BONE_L_SHOULDER && b != OCTOCAP_BONE_R_SHOULDER)
+      out += (out.empty() ? "" : ", ") + bone_name(b);
+  return out;
+}
+
+Retargeter::Retargeter(const Character& c, const BoneMap& map) : c_(c), map_(map) {
+  const std::string missing = missing_bones(map);
+  if (!missing.empty()) throw std::runtime_error(c.source + ": no model bone found for " + missing + " (give a --bone-map)");
+  rest_locals_ = c.rest_locals();
+  rest_globals_ = c.globals(rest_locals_);
+  auto pos = [&](int node) { return Eigen::Vector3f(rest_globals_[node].translation()); };
+
+  // Tails: the node of the bone that starts where this one ends, else the node's largest child.
+  for (int b = 0; b < OCTOCAP_BONE_COUNT; ++b) {
+    tail_node_[b] = -1;
+    if (map[b] < 0) continue;
+    const int tail_joint = bone_info(b).tail_joint;
+    for (int o = 0; o < OCTOCAP_BONE_COUNT && tail_node_[b] < 0; ++o)
+      if (o != b && map[o] >= 0 && bone_info(o).head_joint == tail_joint && map[o] != map[b]) tail_node_[b] = map[o];
+    if (tail_node_[b] >= 0) continue;
+    int best = -1, best_size = -1;
+    for (size_t i = 0; i < c.nodes.size(); ++i)
+      if (c.nodes[i].parent == map[b] && descendants(c, static_cast<int>(i)) > best_size)
+        best = static_cast<int>(i), best_size = descendants(c, static_cast<int>(i));
+    tail_node_[b] = best;
+  }
+
+  // The model's own axes from its rest pose: left from the right to the left thigh, up from the hips to the neck.
+  const Eigen::Vector3f left = pos(map[OCTOCAP_BONE_L_UPPER_LEG]) - pos(map[OCTOCAP_BONE_R_UPPER_LEG]);
+  const Eigen::Vector3f up = pos(map[OCTOCAP_BONE_HEAD]) - pos(map[OCTOCAP_BONE_ROOT]);
+  Eigen::Matrix3f axes;  // columns: rig X (left), Y (up), Z (forward) in model coordinates
+  axes.col(0) = left.normalized();
+  axes.col(1) = (up - axes.col(0) * axes.col(0).dot(up)).normalized();
+  axes.col(2) = axes.col(0).cross(axes.col(1));
+  to_rig_ = axes.transpose();
+  const int knee = map[OCTOCAP_BONE_L_LOWER_LEG];
+  leg_length_ = (pos(knee) - pos(map[OCTOCAP_BONE_L_UPPER_LEG])).norm() +
+                (tail_node_[OCTOCAP_BONE_L_LOWER_LEG] >= 0 ? (pos(tail_node_[OCTOCAP_BONE_L_LOWER_LEG]) - pos(knee)).norm() : 0.f);
+
+  for (int b = 0; b < OCTOCAP_BONE_COUNT; ++b) {
+    correction_[b] = Eigen::Quaternionf::Identity();
+    if (map[b] < 0 || tail_node_[b] < 0) continue;
+    const Eigen::Vector3f rest = pos(tail_node_[b]) - pos(map[b]);
+    if (rest.norm() < 1e-6f) continue;
+    const octocap_bone_info_t info = bone_info(b);
+    const Eigen::Vector3f tmpl = axes * Eigen::Vector3f(info.rest_direction[0], info.rest_direction[1], info.rest_direction[2]);
+    correction_[b] = Eigen::Quaternionf::FromTwoVectors(rest.normalized(), tmpl);
+  }
+}
+
+std::vector<Eigen::Affine3f> Retargeter::pose(const octocap_bone_pose_t* bones) const {
+  std::vector<int> bone_of(c_.nodes.size(), -1);
+  for (int b = 0; b < OCTOCAP_BONE_COUNT; ++b)
+    if (map_[b] >= 0) bone_of[map_[b]] = b;
+  const Eigen::Matrix3f axes = to_rig_.transpose();
+  std::vector<Eigen::Affine3f> g(c_.nodes.size());
+  for (size_t i = 0; i < c_.nodes.size(); ++i) {
+    const int parent = c_.nodes[i].parent;
+    g[i] = parent < 0 ? rest_locals_[i] : g[parent] * rest_locals_[i];
+    const int b = bone_of[i];
+    if (b < 0 || !bones[b].valid) continue;
+    const octocap_quat_t& q = bones[b].global_rotation;
+    const Eigen::Matrix3f rig = Eigen::Quaternionf(q.w, q.x, q.y, q.z).toRotationMatrix();
+    // The measured rotation from the template, in model axes, applied to the rest pose turned onto the template.
+    const Eigen::Matrix3f rotation = axes * rig * to_rig_ * correction_[b].toRotationMatrix() *
+                                     rest_globals_[i].linear();
+    g[i].linear() = rotation;
+  }
+  return g;
+}
+
+Eigen::Affine3f Retargeter::placement(const octocap_bone_pose_t* bones) const {
+  const octocap_bone_pose_t& upper = bones[OCTOCAP_BONE_L_UPPER_LEG];
+  const octocap_bone_pose_t& lower = bones[OCTOCAP_BONE_L_LOWER_LEG];
+  const float scale = upper.valid && lower.valid && leg_length_ > 0 ? (upper.length_m + lower.length_m) / leg_length_ : 1.0f;
+  const Eigen::Vector3f root(bones[OCTOCAP_BONE_ROOT].head_position[0], bones[OCTOCAP_BONE_ROOT].head_position[1],
+                             bones[OCTOCAP_BONE_ROOT].head_position[2]);
+  const Eigen::Vector3f model_root = rest_globals_[map_[OCTOCAP_BONE_ROOT]].translation();
+  Eigen::Affine3f t = Eigen::Affine3f::Identity();
+  t.translate(root);
+  t.linear() = scale * to_rig_;
+  t.translate(-model_root);
+  return t;
+}
+
+Eigen::Vector3f Retargeter::bone_head(const std::vector<Eigen::Affine3f>& globals, int b) const {
+  return globals[map_[b]].translation();
+}
+
+Eigen::Vector3f Retargeter::bone_tail(const std::vector<Eigen::Affine3f>& globals, int b) const {
+  return tail_node_[b] >= 0 ? Eigen::Vector3f(globals[tail_node_[b]].translation()) : bone_head(globals, b);
+}

@@ -1,0 +1,110 @@
+#include "scene.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace {
+
+void check(octocap_result_t r, const std::string& what) {
+  if (r != OCTOCAP_OK) throw std::runtime_error(what + ": " + octocap_last_error());
+}
+
+Eigen::Vector3f position(const octocap_joint_t& j) { return {j.position[0], j.position[1], j.position[2]}; }
+
+}  // namespace
+
+Scene::Scene(const std::string& motion_path, const SceneOptions& options) : options_(options) {
+  octocap_motion_t* m = nullptr;
+  check(octocap_motion_open(motion_path.c_str(), &m), "opening the motion");
+  motion_.reset(m);
+  check(octocap_motion_info(m, &frames_, &rate_hz_), "motion info");
+  character_ = load_character(options.model.empty() ? default_character_path() : options.model);
+  map_ = find_bone_map(character_);
+  if (!options.bone_map.empty()) apply_bone_map_file(character_, options.bone_map, map_);
+  retarget_ = std::make_unique<Retargeter>(character_, map_);
+
+  // One scale for the whole take (the median leg), and the floor and centre the cameras look at.
+  std::vector<float> legs;
+  float lowest = std::numeric_limits<float>::infinity();
+  Eigen::Vector3f sum = Eigen::Vector3f::Zero();
+  int roots = 0;
+  octocap_bone_pose_t bones[OCTOCAP_BONE_COUNT];
+  octocap_joint_t joints[OCTOCAP_JOINT_COUNT];
+  uint32_t n = 0;
+  const uint32_t step = std::max(1u, frames_ / 200);
+  for (uint32_t f = 0; f < frames_; f += step) {
+    check(octocap_motion_bones(m, f, OCTOCAP_FRAME_RIG, bones, OCTOCAP_BONE_COUNT, &n), "bones");
+    check(octocap_motion_joints(m, f, joints, OCTOCAP_JOINT_COUNT, &n), "joints");
+    if (bones[OCTOCAP_BONE_L_UPPER_LEG].valid && bones[OCTOCAP_BONE_L_LOWER_LEG].valid)
+      legs.push_back(bones[OCTOCAP_BONE_L_UPPER_LEG].length_m + bones[OCTOCAP_BONE_L_LOWER_LEG].length_m);
+    for (const auto& j : joints)
+      if (j.valid) lowest = std::min(lowest, j.position[1]);
+    if (joints[OCTOCAP_JOINT_ROOT].valid) sum += position(joints[OCTOCAP_JOINT_ROOT]), ++roots;
+  }
+  if (legs.empty()) throw std::runtime_error(motion_path + ": no frame has a left leg (hip, knee, ankle)");
+  std::nth_element(legs.begin(), legs.begin() + legs.size() / 2, legs.end());
+  scale_ = legs[legs.size() / 2] / retarget_->model_leg_length();
+  floor_y_ = std::isfinite(lowest) ? lowest - 0.08f : 0.0f;  // feet joints sit at the ankles
+  centre_ = roots ? Eigen::Vector3f(sum / static_cast<float>(roots)) : Eigen::Vector3f::Zero();
+  skinned_.resize(character_.meshes.size());
+}
+
+Scene::~Scene() = default;
+
+std::vector<const SkinnedMesh*> Scene::meshes() const {
+  std::vector<const SkinnedMesh*> out;
+  for (const auto& m : character_.meshes) out.push_back(&m);
+  return out;
+}
+
+void Scene::pose(int frame) {
+  octocap_bone_pose_t bones[OCTOCAP_BONE_COUNT];
+  octocap_joint_t joints[OCTOCAP_JOINT_COUNT];
+  uint32_t n = 0;
+  const uint32_t f = static_cast<uint32_t>(std::clamp(frame, 0, static_cast<int>(frames_) - 1));
+  check(octocap_motion_bones(motion_.get(), f, OCTOCAP_FRAME_RIG, bones, OCTOCAP_BONE_COUNT, &n), "bones");
+  check(octocap_motion_joints(motion_.get(), f, joints, OCTOCAP_JOINT_COUNT, &n), "joints");
+
+  const std::vector<Eigen::Affine3f> globals = retarget_->pose(bones);
+  const auto skin = skin_matrices(character_, globals);
+  for (size_t m = 0; m < character_.meshes.size(); ++m)
+    skin_mesh(character_.meshes[m], skin, Eigen::Affine3f::Identity(), options_.skinning, skinned_[m]);
+
+  // Placement with the take's fixed scale: the model root on the measured root.
+  const Eigen::Affine3f unit = retarget_->placement(bones);
+  const float frame_scale = unit.linear().col(0).norm();
+  placement_ = unit;
+  if (frame_scale > 0) {
+    const Eigen::Vector3f root_model = globals[map_[OCTOCAP_BONE_ROOT]].translation();
+    const Eigen::Vector3f root_world = unit * root_model;
+    placement_.linear() = unit.linear() * (scale_ / frame_scale);
+    placement_.translation() = root_world - placement_.linear() * root_model;
+  }
+
+  if (joints[OCTOCAP_JOINT_ROOT].valid) root_ = position(joints[OCTOCAP_JOINT_ROOT]);
+  segments_.clear();
+  if (options_.skeleton_overlay)
+    for (int b = 0; b < OCTOCAP_BONE_COUNT; ++b) {
+      octocap_bone_info_t info;
+      octocap_bone_info(static_cast<uint32_t>(b), &info);
+      if (joints[info.head_joint].valid && joints[info.tail_joint].valid)
+        segments_.emplace_back(position(joints[info.head_joint]), position(joints[info.tail_joint]));
+    }
+
+  joints_.fill(Eigen::Vector3f::Constant(std::numeric_limits<float>::quiet_NaN()));
+  for (int b = 0; b < OCTOCAP_BONE_COUNT; ++b) {
+    if (map_[b] < 0) continue;
+    octocap_bone_info_t info;
+    octocap_bone_info(static_cast<uint32_t>(b), &info);
+    if (!joints_[info.head_joint].allFinite()) joints_[info.head_joint] = placement_ * retarget_->bone_head(globals, b);
+  }
+  for (int b = 0; b < OCTOCAP_BONE_COUNT; ++b) {
+    if (map_[b] < 0) continue;
+    octocap_bone_info_t info;
+    octocap_bone_info(static_cast<uint32_t>(b), &info);
+    if (!joints_[info.tail_joint].allFinite()) joints_[info.tail_joint] = placement_ * retarget_->bone_tail(globals, b);
+  }
+}

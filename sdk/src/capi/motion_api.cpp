@@ -1,0 +1,66 @@
+// Motion files for playback: joints and bone poses per frame, from TRC / CSV / BVH.
+#include "capi/boundary.h"
+#include "capi/frame_queries.h"
+#include "capi/handles.h"
+#include "rig/motion_source.h"
+
+using namespace octocap;
+
+struct octocap_motion_t {
+  SkeletonMotion motion;
+};
+
+namespace {
+
+// The frame as a FrameResult, so the session's own query code converts it (joints in the rig frame here).
+FrameResult frame_of(const octocap_motion_t* m, uint32_t frame) {
+  capi::checked(m, "motion");
+  if (frame >= m->motion.frames.size())
+    throw Error(Errc::invalid_argument, "frame " + std::to_string(frame) + " out of range (" +
+                                            std::to_string(m->motion.frames.size()) + " frames)");
+  const SkeletonJoints& j = m->motion.frames[frame];
+  FrameResult f;
+  f.info.frame_index = frame;
+  for (int k = 0; k < kJointCount; ++k) {
+    f.joints[k].valid = j[k].allFinite();
+    if (f.joints[k].valid) f.joints[k].position = j[k];
+  }
+  f.bones = solve_bones(j);
+  return f;
+}
+
+}  // namespace
+
+extern "C" {
+
+octocap_result_t octocap_motion_open(const char* path, octocap_motion_t** out) {
+  return capi::guard([&] {
+    capi::require(out, "out");
+    *out = nullptr;
+    capi::require(path, "path");
+    auto motion = load_skeleton_motion(path);
+    *out = capi::make_handle<octocap_motion_t>(std::move(motion));
+  });
+}
+
+void octocap_motion_destroy(octocap_motion_t* m) { capi::destroy_handle(m); }
+
+octocap_result_t octocap_motion_info(const octocap_motion_t* m, uint32_t* frame_count, double* rate_hz) {
+  return capi::guard([&] {
+    capi::checked(m, "motion");
+    if (frame_count) *frame_count = static_cast<uint32_t>(m->motion.frames.size());
+    if (rate_hz) *rate_hz = m->motion.rate_hz;
+  });
+}
+
+octocap_result_t octocap_motion_joints(const octocap_motion_t* m, uint32_t frame, octocap_joint_t* out,
+                                       uint32_t capacity, uint32_t* count) {
+  return capi::guard([&] { capi::query_joints(frame_of(m, frame), out, capacity, count); });
+}
+
+octocap_result_t octocap_motion_bones(const octocap_motion_t* m, uint32_t frame, octocap_coord_frame_t coord_frame,
+                                      octocap_bone_pose_t* out, uint32_t capacity, uint32_t* count) {
+  return capi::guard([&] { capi::query_bones(frame_of(m, frame), coord_frame, out, capacity, count); });
+}
+
+}  // extern "C"

@@ -1,0 +1,24 @@
+// Motion files as skeleton joints for playback (the viewer, engines): a TRC or CSV of keypoints (octocap's own
+// output, Pose2Sim's) or a BVH (CMU, Mixamo-style and octocap's own joint names).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/layout.h"
+#include "rig/bone_solver.h"
+
+namespace octocap {
+
+struct SkeletonMotion {
+  std::vector<SkeletonJoints> frames;  // rig frame: Y up, metres; NaN where missing
+  double rate_hz = 30;
+  std::string source_kind;             // "TRC (COCO_17)", "BVH", ...
+};
+
+// Throws Error(io / parse / invalid_argument) naming the file: unknown extension, no recognisable skeleton.
+SkeletonMotion load_skeleton_motion(const std::string& path);
+
+// The paper's 15 joints from one frame of layout keypoints (the layout's joint sources; NaN when absent).
+SkeletonJoints joints_from_keypoints(const KeypointLayout& layout, const std::vector<Eigen::Vector3d>& keypoints);
+
+}  // namespace octocap
