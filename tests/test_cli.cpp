@@ -11,26 +11,17 @@
 #include "io/bvh.h"
 #include "io/calibration_toml.h"
 #include "io/motion_files.h"
+#include "support/run_command.h"
 #include "support/temp_dir.h"
 
 using Catch::Matchers::ContainsSubstring;
 
 namespace {
 
-struct Run {
-  int status;
-  std::string output;
-};
+using testing::Run;
 
 Run run(const std::string& args, const char* program = OCTOCAP_CLI_PATH) {
-  const std::string cmd = std::string(program) + " " + args + " 2>&1";
-  Run r{0, ""};
-  FILE* p = popen(cmd.c_str(), "r");
-  REQUIRE(p != nullptr);
-  char buf[4096];
-  while (size_t n = fread(buf, 1, sizeof buf, p)) r.output.append(buf, n);
-  r.status = pclose(p);
-  return r;
+  return testing::run_command(std::string(program) + " " + args);
 }
 
 const std::string kSample = std::string(OCTOCAP_SOURCE_DIR) + "/data/sample";

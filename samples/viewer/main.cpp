@@ -152,7 +152,10 @@ int run(const Options& o) {
   }
   const bool per_camera_folders = cameras.size() > 1 || o.all_cameras;
   std::unique_ptr<TruthWriter> truth;
-  if (!o.ground_truth.empty()) truth = std::make_unique<TruthWriter>(o.ground_truth, rig_to_world(z_up));
+  if (!o.ground_truth.empty()) {
+    if (fs::path(o.ground_truth).has_parent_path()) fs::create_directories(fs::path(o.ground_truth).parent_path());
+    truth = std::make_unique<TruthWriter>(o.ground_truth, rig_to_world(z_up));
+  }
   for (const auto& c : cameras) fs::create_directories(per_camera_folders ? fs::path(o.frames_dir) / c.name : fs::path(o.frames_dir));
 
   std::unique_ptr<OffscreenContext> context;

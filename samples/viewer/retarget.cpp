@@ -89,16 +89,6 @@ octocap_bone_info_t bone_info(int b) {
   return info;
 }
 
-int descendants(const Character& c, int node) {
-  int n = 0;
-  for (size_t i = static_cast<size_t>(node) + 1; i < c.nodes.size(); ++i) {
-    int p = c.nodes[i].parent;
-    while (p > node) p = c.nodes[p].parent;
-    n += p == node;
-  }
-  return n;
-}
-
 }  // namespace
 
 BoneMap find_bone_map(const Character& c) {
@@ -154,21 +144,6 @@ Retargeter::Retargeter(const Character& c, const BoneMap& map) : c_(c), map_(map
   rest_globals_ = c.globals(rest_locals_);
   auto pos = [&](int node) { return Eigen::Vector3f(rest_globals_[node].translation()); };
 
-  // Tails: the node of the bone that starts where this one ends, else the node's largest child.
-  for (int b = 0; b < OCTOCAP_BONE_COUNT; ++b) {
-    tail_node_[b] = -1;
-    if (map[b] < 0) continue;
-    const int tail_joint = bone_info(b).tail_joint;
-    for (int o = 0; o < OCTOCAP_BONE_COUNT && tail_node_[b] < 0; ++o)
-      if (o != b && map[o] >= 0 && bone_info(o).head_joint == tail_joint && map[o] != map[b]) tail_node_[b] = map[o];
-    if (tail_node_[b] >= 0) continue;
-    int best = -1, best_size = -1;
-    for (size_t i = 0; i < c.nodes.size(); ++i)
-      if (c.nodes[i].parent == map[b] && descendants(c, static_cast<int>(i)) > best_size)
-        best = static_cast<int>(i), best_size = descendants(c, static_cast<int>(i));
-    tail_node_[b] = best;
-  }
-
   // The model's own axes from its rest pose: left from the right to the left thigh, up from the hips to the neck.
   const Eigen::Vector3f left = pos(map[OCTOCAP_BONE_L_UPPER_LEG]) - pos(map[OCTOCAP_BONE_R_UPPER_LEG]);
   const Eigen::Vector3f up = pos(map[OCTOCAP_BONE_HEAD]) - pos(map[OCTOCAP_BONE_ROOT]);
@@ -177,18 +152,39 @@ Retargeter::Retargeter(const Character& c, const BoneMap& map) : c_(c), map_(map
   axes.col(1) = (up - axes.col(0) * axes.col(0).dot(up)).normalized();
   axes.col(2) = axes.col(0).cross(axes.col(1));
   to_rig_ = axes.transpose();
+  auto template_dir = [&](int b) {
+    const octocap_bone_info_t info = bone_info(b);
+    return Eigen::Vector3f(axes * Eigen::Vector3f(info.rest_direction[0], info.rest_direction[1], info.rest_direction[2]));
+  };
+
+  // Tails: the node of the bone that starts where this one ends, else the child best aligned with the template
+  // direction (a head node's children are face bones and, in the default model, a ponytail pointing back).
+  for (int b = 0; b < OCTOCAP_BONE_COUNT; ++b) {
+    tail_node_[b] = -1;
+    if (map[b] < 0) continue;
+    const int tail_joint = bone_info(b).tail_joint;
+    for (int o = 0; o < OCTOCAP_BONE_COUNT && tail_node_[b] < 0; ++o)
+      if (o != b && map[o] >= 0 && bone_info(o).head_joint == tail_joint && map[o] != map[b]) tail_node_[b] = map[o];
+    if (tail_node_[b] >= 0) continue;
+    float best = -2;
+    for (size_t i = 0; i < c.nodes.size(); ++i) {
+      const Eigen::Vector3f d = pos(static_cast<int>(i)) - pos(map[b]);
+      if (c.nodes[i].parent != map[b] || d.norm() < 1e-6f) continue;
+      const float cosine = d.normalized().dot(template_dir(b));
+      if (cosine > best) best = cosine, tail_node_[b] = static_cast<int>(i);
+    }
+  }
   const int knee = map[OCTOCAP_BONE_L_LOWER_LEG];
   leg_length_ = (pos(knee) - pos(map[OCTOCAP_BONE_L_UPPER_LEG])).norm() +
                 (tail_node_[OCTOCAP_BONE_L_LOWER_LEG] >= 0 ? (pos(tail_node_[OCTOCAP_BONE_L_LOWER_LEG]) - pos(knee)).norm() : 0.f);
 
   for (int b = 0; b < OCTOCAP_BONE_COUNT; ++b) {
     correction_[b] = Eigen::Quaternionf::Identity();
-    if (map[b] < 0 || tail_node_[b] < 0) continue;
+    // A model's head rests upright whatever its head node's children point at: no correction for it.
+    if (map[b] < 0 || tail_node_[b] < 0 || b == OCTOCAP_BONE_HEAD) continue;
     const Eigen::Vector3f rest = pos(tail_node_[b]) - pos(map[b]);
     if (rest.norm() < 1e-6f) continue;
-    const octocap_bone_info_t info = bone_info(b);
-    const Eigen::Vector3f tmpl = axes * Eigen::Vector3f(info.rest_direction[0], info.rest_direction[1], info.rest_direction[2]);
-    correction_[b] = Eigen::Quaternionf::FromTwoVectors(rest.normalized(), tmpl);
+    correction_[b] = Eigen::Quaternionf::FromTwoVectors(rest.normalized(), template_dir(b));
   }
 }
 

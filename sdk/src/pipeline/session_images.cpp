@@ -34,11 +34,31 @@ void Session::solve_images(const std::vector<ImageView>& images, int64_t timesta
                                               "with that layout (it has " + layout_->name + ")");
     detector_ = std::move(detector);
   }
-  detector_->set_hints(reprojected_keypoints());
+  // Images at another size than the calibration's (a preview stream, a downscaled render) are fine when the
+  // aspect matches: keypoints are scaled to calibration pixels for the solve; detections stay in image pixels.
+  std::vector<Eigen::Vector2d> scale(images.size(), Eigen::Vector2d::Ones());
+  for (size_t v = 0; v < images.size(); ++v) {
+    const Camera& cam = calib_[v];
+    if (cam.width <= 0 || cam.height <= 0 || (cam.width == images[v].width && cam.height == images[v].height)) continue;
+    scale[v] = {static_cast<double>(cam.width) / images[v].width, static_cast<double>(cam.height) / images[v].height};
+    if (std::abs(scale[v].x() / scale[v].y() - 1) > 0.01)
+      throw Error(Errc::invalid_argument, "image " + std::to_string(v) + " is " + std::to_string(images[v].width) + "x" +
+                                              std::to_string(images[v].height) + ", camera " + cam.name + " was calibrated at " +
+                                              std::to_string(cam.width) + "x" + std::to_string(cam.height) +
+                                              " (another aspect ratio: not the same picture)");
+  }
+  std::vector<Person2D> hints = reprojected_keypoints();
+  for (size_t v = 0; v < hints.size(); ++v)
+    for (Keypoint2D& k : hints[v]) k.x = (k.x + 0.5) / scale[v].x() - 0.5, k.y = (k.y + 0.5) / scale[v].y() - 0.5;
+  detector_->set_hints(std::move(hints));
   detections_ = detector_->detect(images);
   std::vector<std::vector<Person2D>> people(detections_.size());
   for (size_t v = 0; v < detections_.size(); ++v)
-    for (const DetectedPerson& d : detections_[v]) people[v].push_back(d.keypoints);
+    for (const DetectedPerson& d : detections_[v]) {
+      Person2D p = d.keypoints;
+      for (Keypoint2D& k : p) k.x = (k.x + 0.5) * scale[v].x() - 0.5, k.y = (k.y + 0.5) * scale[v].y() - 0.5;
+      people[v].push_back(std::move(p));
+    }
   solve(people, timestamp_us);
 }
 
