@@ -108,7 +108,12 @@ TEST_CASE("solve_images refuses what it cannot do, clearly") {
 
   cfg.layout = OCTOCAP_LAYOUT_COCO_17;
   testing::Session coco = testing::make_session(calib.get(), cfg);
-  // Black frames: nobody anywhere, reported as too few views, and the session stays usable.
+  // The cameras were calibrated at 1088x1920: a 64x48 picture is not a smaller copy of their images.
+  CHECK(octocap_session_solve_images(coco.get(), views.data(), 4, 0) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  CHECK(std::string(octocap_last_error()).find("calibrated at 1088x1920") != std::string::npos);
+  // Black frames at a sixteenth of the size: nobody anywhere, too few views, and the session stays usable.
+  pixels.assign(68 * 120 * 3, 0);
+  views.assign(4, octocap_image_t{pixels.data(), 68, 120, 68 * 3, OCTOCAP_PIXELS_RGB8});
   CHECK(octocap_session_solve_images(coco.get(), views.data(), 4, 0) == OCTOCAP_ERROR_NOT_ENOUGH_VIEWS);
   REQUIRE(octocap_session_detections(coco.get(), 2, nullptr, 0, &n) == OCTOCAP_OK);
   CHECK(n == 0);

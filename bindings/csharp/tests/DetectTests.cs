@@ -21,12 +21,12 @@ namespace Octocap.Tests
                 cfg.Detector.Threads = 1;
                 using (var session = new Session(cfg, calib))
                 {
-                    var pixels = new byte[96 * 64 * 4];
+                    var pixels = new byte[128 * 72 * 4];  // the sample cameras are 1280x720: a tenth of that
                     fixed (byte* p = pixels)
                     {
                         var images = new Image[calib.CameraCount];
                         for (int v = 0; v < images.Length; ++v)
-                            images[v] = new Image { Pixels = (IntPtr)p, Width = 96, Height = 64, StrideBytes = 96 * 4, Format = PixelFormat.Rgba8 };
+                            images[v] = new Image { Pixels = (IntPtr)p, Width = 128, Height = 72, StrideBytes = 128 * 4, Format = PixelFormat.Rgba8 };
                         var e = Assert.Throws<OctocapException>(() => session.SolveImages(images, 0));
                         Assert.AreEqual(Result.NotEnoughViews, e.Result);
                         StringAssert.Contains("at least 2", e.Message);
