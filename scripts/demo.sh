@@ -25,3 +25,8 @@ rm -rf "$ROOT/out/debug"
   --output "$ROOT/out/videos.trc" --csv "$ROOT/out/videos.csv" --bvh "$ROOT/out/videos.bvh" --rate 60 \
   --detect-mode crop --frames 40 --debug-images "$ROOT/out/debug" --quiet
 echo "  debug images (detections + reprojected 3D): out/debug/"
+echo
+echo "== octocap-viewer: the default character on that motion, rendered headless (OSMesa)"
+rm -rf "$ROOT/out/viewer"
+"$BUILD_DIR/samples/viewer/octocap-viewer" --motion "$ROOT/out/videos.csv" --frames "$ROOT/out/viewer" \
+  --skeleton --size 640x480
