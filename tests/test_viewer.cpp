@@ -8,7 +8,13 @@
 #include <opencv2/imgcodecs.hpp>
 #include <random>
 
+#include <assimp/Importer.hpp>
+#include <assimp/scene.h>
+#include <functional>
+#include <map>
+
 #include "character.h"
+#include "gltf_export.h"
 #include "offscreen.h"
 #include "retarget.h"
 #include "scene.h"
@@ -284,4 +290,48 @@ TEST_CASE("a character rendered from 5 calibrated cameras is solved back from it
   const size_t solved = r.output.find("keypoints solved:");
   REQUIRE(solved != std::string::npos);
   CHECK(std::stod(r.output.substr(r.output.find('(', solved) + 1)) > 90.0);
+}
+
+TEST_CASE("the glTF export carries the skinned character and the motion: re-imported, its joints are the viewer's") {
+  testing::TempDir dir;
+  const std::string glb = dir.file("walk.glb");
+  Scene scene(kCmu, SceneOptions{});
+  const int frames = 8, step = 25;
+  export_gltf(scene, default_character_path(), glb, 0, frames, step);
+
+  Assimp::Importer importer;
+  const aiScene* s = importer.ReadFile(glb, 0);
+  REQUIRE(s != nullptr);
+  REQUIRE(s->mNumAnimations == 1);
+  CHECK(s->mNumMeshes >= 1);
+  CHECK(s->mMeshes[0]->HasBones());
+  const aiAnimation* anim = s->mAnimations[0];
+  CHECK(anim->mNumChannels == 14);  // the scene root + 13 bones
+  // Node transforms at key k: channel keys where animated, the file's own matrix elsewhere.
+  for (int k : {0, 3, 7}) {
+    std::function<void(const aiNode*, const aiMatrix4x4&, std::map<std::string, aiVector3D>&)> walk =
+        [&](const aiNode* n, const aiMatrix4x4& parent, std::map<std::string, aiVector3D>& out) {
+          aiMatrix4x4 local = n->mTransformation;
+          for (unsigned c = 0; c < anim->mNumChannels; ++c) {
+            const aiNodeAnim* ch = anim->mChannels[c];
+            if (ch->mNodeName != n->mName) continue;
+            REQUIRE(ch->mNumRotationKeys == static_cast<unsigned>(frames));
+            local = aiMatrix4x4(ch->mScalingKeys[k].mValue, ch->mRotationKeys[k].mValue, ch->mPositionKeys[k].mValue);
+          }
+          const aiMatrix4x4 global = parent * local;
+          out[n->mName.C_Str()] = aiVector3D(global.a4, global.b4, global.c4);
+          for (unsigned i = 0; i < n->mNumChildren; ++i) walk(n->mChildren[i], global, out);
+        };
+    std::map<std::string, aiVector3D> positions;
+    walk(s->mRootNode, aiMatrix4x4(), positions);
+    scene.pose(k * step);
+    for (int b = 0; b < OCTOCAP_BONE_COUNT; ++b) {
+      const std::string name = scene.character().nodes[scene.bone_map()[b]].name;
+      REQUIRE(positions.count(name) == 1);
+      const Eigen::Vector3f want = scene.placement() * scene.globals()[scene.bone_map()[b]].translation();
+      const aiVector3D& got = positions[name];
+      INFO("key " << k << ", node " << name);
+      CHECK((Eigen::Vector3f(got.x, got.y, got.z) - want).norm() < 1e-3f);  // within 1 mm
+    }
+  }
 }

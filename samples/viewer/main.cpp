@@ -9,6 +9,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "gltf_export.h"
 #include "offscreen.h"
 #include "scene.h"
 #include "window.h"
@@ -19,7 +20,7 @@ namespace {
 
 struct Options {
   std::string motion, frames_dir, model, bone_map, calibration, camera, size = "640x480", skinning = "lbs", up = "auto";
-  std::string ground_truth;
+  std::string ground_truth, gltf;
   bool all_cameras = false, skeleton = false, no_grid = false, window = false;
   int max_frames = 0, step = 1;
 };
@@ -142,7 +143,12 @@ int run(const Options& o) {
     return 0;
   }
 
-  if (o.frames_dir.empty()) throw std::runtime_error("give --frames DIR (PNG output) or --window");
+  if (!o.gltf.empty()) {
+    export_gltf(scene, o.model.empty() ? default_character_path() : o.model, o.gltf, 0, (frames + o.step - 1) / o.step, o.step);
+    std::printf("octocap-viewer: wrote %s (%d animation frames)\n", o.gltf.c_str(), (frames + o.step - 1) / o.step);
+    if (o.frames_dir.empty()) return 0;
+  }
+  if (o.frames_dir.empty()) throw std::runtime_error("give --frames DIR (PNG output), --export-gltf FILE or --window");
   bool z_up = false;
   std::vector<NamedCamera> cameras;
   if (!o.calibration.empty()) {
@@ -199,6 +205,7 @@ int main(int argc, char** argv) {
   app.add_option("--calibration", o.calibration, "Render from calibrated cameras (anipose / Pose2Sim TOML)")->check(CLI::ExistingFile);
   app.add_option("--camera", o.camera, "With --calibration: the camera to render from");
   app.add_flag("--all-cameras", o.all_cameras, "With --calibration: every camera, into DIR/<camera>/");
+  app.add_option("--export-gltf", o.gltf, "Write the character with the motion as glTF 2.0 binary (.glb)");
   app.add_option("--ground-truth", o.ground_truth, "Also write the character's true joints per frame (CSV, world frame)");
   app.add_option("--size", o.size, "Image size WxH (calibrated cameras: the width scales the calibration's size)")->capture_default_str();
   app.add_option("--skinning", o.skinning, "lbs (linear blend) or dqs (dual quaternion)")->check(CLI::IsMember({"lbs", "dqs"}))->capture_default_str();

@@ -68,7 +68,8 @@ void Scene::pose(int frame) {
   check(octocap_motion_bones(motion_.get(), f, OCTOCAP_FRAME_RIG, bones, OCTOCAP_BONE_COUNT, &n), "bones");
   check(octocap_motion_joints(motion_.get(), f, joints, OCTOCAP_JOINT_COUNT, &n), "joints");
 
-  const std::vector<Eigen::Affine3f> globals = retarget_->pose(bones);
+  globals_ = retarget_->pose(bones);
+  const std::vector<Eigen::Affine3f>& globals = globals_;
   const auto skin = skin_matrices(character_, globals);
   for (size_t m = 0; m < character_.meshes.size(); ++m)
     skin_mesh(character_.meshes[m], skin, Eigen::Affine3f::Identity(), options_.skinning, skinned_[m]);

@@ -30,6 +30,7 @@ class Scene {
 
   const std::vector<SkinnedVertices>& vertices() const { return skinned_; }
   const Eigen::Affine3f& placement() const { return placement_; }  // model space -> rig frame
+  const std::vector<Eigen::Affine3f>& globals() const { return globals_; }  // posed nodes, model space
   const std::vector<Segment>& skeleton() const { return segments_; }
   std::vector<const SkinnedMesh*> meshes() const;
   float floor_y() const { return floor_y_; }
@@ -59,6 +60,7 @@ class Scene {
   Eigen::Vector3f root_ = Eigen::Vector3f::Zero();
   std::vector<SkinnedVertices> skinned_;
   Eigen::Affine3f placement_ = Eigen::Affine3f::Identity();
+  std::vector<Eigen::Affine3f> globals_;
   std::vector<Segment> segments_;
   std::array<Eigen::Vector3f, OCTOCAP_JOINT_COUNT> joints_{};
 };
