@@ -19,6 +19,7 @@
 #include "retarget.h"
 #include "scene.h"
 #include "skinning.h"
+#include "support/loopback_dds.h"
 #include "support/run_command.h"
 #include "support/temp_dir.h"
 
@@ -334,4 +335,20 @@ TEST_CASE("the glTF export carries the skinned character and the motion: re-impo
       CHECK((Eigen::Vector3f(got.x, got.y, got.z) - want).norm() < 1e-3f);  // within 1 mm
     }
   }
+}
+
+TEST_CASE("octocap-viewer renders a live DDS stream from another process") {
+  const uint32_t domain = testing::loopback_dds_domain() + 7;
+  testing::TempDir dir;
+  // Publisher in the background (it waits for the viewer to subscribe), the viewer renders 5 received poses.
+  const std::string publisher = std::string(OCTOCAP_CLI_PATH) + " solve --calibration " + kSample +
+                                "/calibration.toml --keypoints " + kSample + "/keypoints --output " + dir.file("pub.trc") +
+                                " --publish --publish-qos record --wait-subscribers 1 --quiet --domain " +
+                                std::to_string(domain);
+  const testing::Run r = testing::run_command("(" + publisher + " > /dev/null 2>&1 &); " + OCTOCAP_VIEWER_PATH +
+                                              " --subscribe --qos record --domain " + std::to_string(domain) +
+                                              " --frames " + dir.file("live") + " --max-frames 5 --size 320x240");
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  for (int f = 0; f < 5; ++f) CHECK(std::filesystem::exists(dir.file("live/frame_00000" + std::to_string(f) + ".png")));
 }

@@ -22,6 +22,9 @@ struct Options {
   std::string motion, frames_dir, model, bone_map, calibration, camera, size = "640x480", skinning = "lbs", up = "auto";
   std::string ground_truth, gltf;
   bool all_cameras = false, skeleton = false, no_grid = false, window = false;
+  bool subscribe = false;  // live poses over DDS instead of --motion
+  unsigned domain = 0, source_id = 0;
+  std::string topic = "octocap", qos = "live";
   int max_frames = 0, step = 1;
 };
 
@@ -117,7 +120,19 @@ int run(const Options& o) {
   so.bone_map = o.bone_map;
   so.skinning = o.skinning == "dqs" ? SkinningMethod::dual_quaternion : SkinningMethod::linear;
   so.skeleton_overlay = o.skeleton;
-  Scene scene(o.motion, so);
+  std::unique_ptr<octocap_subscriber_t, void (*)(octocap_subscriber_t*)> subscriber(nullptr, octocap_subscriber_destroy);
+  if (o.subscribe) {
+    octocap_subscriber_config_t sc;
+    octocap_subscriber_config_init(&sc);
+    sc.domain_id = o.domain;
+    sc.qos = o.qos == "record" ? OCTOCAP_QOS_RECORD : OCTOCAP_QOS_LIVE;
+    sc.source_id = o.source_id;
+    std::snprintf(sc.topic, sizeof sc.topic, "%s", o.topic.c_str());
+    octocap_subscriber_t* raw = nullptr;
+    check(octocap_subscriber_create(&sc, &raw), "subscribing");
+    subscriber.reset(raw);
+  }
+  Scene scene = o.subscribe ? Scene(subscriber.get(), so) : Scene(o.motion, so);
   std::string mapped;
   for (int b = 0; b < OCTOCAP_BONE_COUNT; ++b) {
     octocap_bone_info_t info;
@@ -126,7 +141,8 @@ int run(const Options& o) {
     mapped += std::string(b ? ", " : "") + info.name + "=" + (node >= 0 ? scene.character().nodes[node].name : "-");
   }
   std::fprintf(stderr, "  bone map: %s\n", mapped.c_str());
-  const int frames = o.max_frames > 0 ? std::min(o.max_frames * o.step, scene.frame_count()) : scene.frame_count();
+  const int frames = scene.live() ? std::max(o.max_frames, 0)
+                     : o.max_frames > 0 ? std::min(o.max_frames * o.step, scene.frame_count()) : scene.frame_count();
   std::fprintf(stderr, "octocap-viewer: %s, %zu vertices, %d frames at %.1f Hz\n", scene.character().source.c_str(),
                scene.character().vertex_count(), scene.frame_count(), scene.rate_hz());
 
@@ -136,9 +152,11 @@ int run(const Options& o) {
                [&](const GlApi& gl) { renderer = std::make_unique<Renderer>(gl, scene.meshes()); },
                [&] { renderer.reset(); },
                [&](const WindowView& v, int w, int h) {
-                 scene.pose(v.frame * o.step);
+                 if (scene.live()) scene.take_live(0);
+                 else scene.pose(v.frame * o.step);
                  const ViewCamera cam = orbit_camera(scene.root(), v.distance, v.yaw, v.pitch, 45, w, h);
-                 renderer->draw(cam, scene.vertices(), scene.placement(), scene.skeleton(), !o.no_grid, scene.floor_y());
+                 renderer->draw(cam, scene.posed() ? scene.vertices() : std::vector<SkinnedVertices>{}, scene.placement(),
+                                scene.skeleton(), !o.no_grid, scene.floor_y());
                });
     return 0;
   }
@@ -167,8 +185,10 @@ int run(const Options& o) {
   std::unique_ptr<OffscreenContext> context;
   std::unique_ptr<Renderer> renderer;
   int written = 0;
-  for (int f = 0, out_index = 0; f < frames; f += o.step, ++out_index) {
-    scene.pose(f);
+  if (scene.live() && frames <= 0) throw std::runtime_error("with --subscribe and --frames, give --max-frames N");
+  for (int f = 0, out_index = 0; f < frames; f += scene.live() ? 1 : o.step, ++out_index) {
+    if (!scene.live()) scene.pose(f);
+    else if (!scene.take_live(10000)) throw std::runtime_error("no pose arrived within 10 s (is a publisher running?)");
     if (truth) truth->add(out_index, scene.character_joints());
     if (o.calibration.empty()) {
       const Eigen::Vector3f target(scene.root().x(), scene.floor_y() + 1.0f, scene.root().z());
@@ -198,7 +218,13 @@ int run(const Options& o) {
 int main(int argc, char** argv) {
   CLI::App app{"octocap-viewer: a skinned character driven by octocap motion, rendered to PNG or a window"};
   Options o;
-  app.add_option("--motion", o.motion, "Motion: TRC or CSV from octocap solve, or a BVH")->required()->check(CLI::ExistingFile);
+  auto* motion = app.add_option("--motion", o.motion, "Motion: TRC or CSV from octocap solve, or a BVH")->check(CLI::ExistingFile);
+  auto* live = app.add_flag("--subscribe", o.subscribe, "Live poses over DDS from octocap (a session or octocap solve --publish)");
+  motion->excludes(live);
+  app.add_option("--domain", o.domain, "With --subscribe: DDS domain id")->capture_default_str();
+  app.add_option("--topic", o.topic, "With --subscribe: topic base name")->capture_default_str();
+  app.add_option("--qos", o.qos, "With --subscribe: live or record (as the publisher)")->check(CLI::IsMember({"live", "record"}))->capture_default_str();
+  app.add_option("--source-id", o.source_id, "With --subscribe: only this rig (0: any)")->capture_default_str();
   app.add_option("--frames", o.frames_dir, "Write one PNG per motion frame here (frame_000000.png, ...)");
   app.add_option("--model", o.model, "Rigged character (glTF/GLB, FBX, COLLADA, X, ...); default: assimp's rigged human")->check(CLI::ExistingFile);
   app.add_option("--bone-map", o.bone_map, "JSON {\"octocap bone\": \"model node\"} overriding the name heuristics")->check(CLI::ExistingFile);
@@ -216,6 +242,10 @@ int main(int argc, char** argv) {
   app.add_option("--max-frames", o.max_frames, "Render at most this many frames (0: all)")->capture_default_str();
   app.add_option("--step", o.step, "Render every N-th motion frame")->check(CLI::PositiveNumber)->capture_default_str();
   CLI11_PARSE(app, argc, argv);
+  if (o.motion.empty() && !o.subscribe) {
+    std::fprintf(stderr, "octocap-viewer: give --motion FILE or --subscribe\n");
+    return 2;
+  }
   if (!o.calibration.empty() && o.camera.empty() && !o.all_cameras) {
     std::fprintf(stderr, "octocap-viewer: with --calibration give --camera NAME or --all-cameras\n");
     return 2;

@@ -16,15 +16,44 @@ Eigen::Vector3f position(const octocap_joint_t& j) { return {j.position[0], j.po
 
 }  // namespace
 
+void Scene::load_model() {
+  character_ = load_character(options_.model.empty() ? default_character_path() : options_.model);
+  map_ = find_bone_map(character_);
+  if (!options_.bone_map.empty()) apply_bone_map_file(character_, options_.bone_map, map_);
+  retarget_ = std::make_unique<Retargeter>(character_, map_);
+  skinned_.resize(character_.meshes.size());
+}
+
+Scene::Scene(octocap_subscriber_t* live, const SceneOptions& options) : live_(live), options_(options) { load_model(); }
+
+bool Scene::take_live(int timeout_ms) {
+  if (!live_) throw std::runtime_error("not a live scene");
+  const octocap_result_t r = octocap_subscriber_take(live_, timeout_ms);
+  if (r == OCTOCAP_ERROR_NO_RESULT) return false;
+  check(r, "receiving a pose");
+  octocap_bone_pose_t bones[OCTOCAP_BONE_COUNT];
+  uint32_t n = 0;
+  check(octocap_subscriber_get_bones(live_, OCTOCAP_FRAME_RIG, bones, OCTOCAP_BONE_COUNT, &n), "bones");
+  if (scale_ <= 0 && bones[OCTOCAP_BONE_L_UPPER_LEG].valid && bones[OCTOCAP_BONE_L_LOWER_LEG].valid) {
+    // Live: the first frame with a leg sets the scale and the floor (below its lowest joint).
+    scale_ = (bones[OCTOCAP_BONE_L_UPPER_LEG].length_m + bones[OCTOCAP_BONE_L_LOWER_LEG].length_m) /
+             retarget_->model_leg_length();
+    float lowest = std::numeric_limits<float>::infinity();
+    for (const auto& b : bones)
+      if (b.valid) lowest = std::min(lowest, b.head_position[1]);
+    floor_y_ = lowest - 0.5f;  // the lowest bone head is a knee: the floor is about half a metre below
+  }
+  if (scale_ <= 0) return false;
+  pose_bones(bones);
+  return true;
+}
+
 Scene::Scene(const std::string& motion_path, const SceneOptions& options) : options_(options) {
   octocap_motion_t* m = nullptr;
   check(octocap_motion_open(motion_path.c_str(), &m), "opening the motion");
   motion_.reset(m);
   check(octocap_motion_info(m, &frames_, &rate_hz_), "motion info");
-  character_ = load_character(options.model.empty() ? default_character_path() : options.model);
-  map_ = find_bone_map(character_);
-  if (!options.bone_map.empty()) apply_bone_map_file(character_, options.bone_map, map_);
-  retarget_ = std::make_unique<Retargeter>(character_, map_);
+  load_model();
 
   // One scale for the whole take (the median leg), and the floor and centre the cameras look at.
   std::vector<float> legs;
@@ -49,7 +78,6 @@ Scene::Scene(const std::string& motion_path, const SceneOptions& options) : opti
   scale_ = legs[legs.size() / 2] / retarget_->model_leg_length();
   floor_y_ = std::isfinite(lowest) ? lowest - 0.08f : 0.0f;  // feet joints sit at the ankles
   centre_ = roots ? Eigen::Vector3f(sum / static_cast<float>(roots)) : Eigen::Vector3f::Zero();
-  skinned_.resize(character_.meshes.size());
 }
 
 Scene::~Scene() = default;
@@ -61,13 +89,16 @@ std::vector<const SkinnedMesh*> Scene::meshes() const {
 }
 
 void Scene::pose(int frame) {
+  if (!motion_) throw std::runtime_error("a live scene is posed by take_live()");
   octocap_bone_pose_t bones[OCTOCAP_BONE_COUNT];
-  octocap_joint_t joints[OCTOCAP_JOINT_COUNT];
   uint32_t n = 0;
   const uint32_t f = static_cast<uint32_t>(std::clamp(frame, 0, static_cast<int>(frames_) - 1));
   check(octocap_motion_bones(motion_.get(), f, OCTOCAP_FRAME_RIG, bones, OCTOCAP_BONE_COUNT, &n), "bones");
-  check(octocap_motion_joints(motion_.get(), f, joints, OCTOCAP_JOINT_COUNT, &n), "joints");
+  pose_bones(bones);
+}
 
+void Scene::pose_bones(const octocap_bone_pose_t* bones) {
+  posed_ = true;
   globals_ = retarget_->pose(bones);
   const std::vector<Eigen::Affine3f>& globals = globals_;
   const auto skin = skin_matrices(character_, globals);
@@ -85,14 +116,20 @@ void Scene::pose(int frame) {
     placement_.translation() = root_world - placement_.linear() * root_model;
   }
 
-  if (joints[OCTOCAP_JOINT_ROOT].valid) root_ = position(joints[OCTOCAP_JOINT_ROOT]);
+  if (bones[OCTOCAP_BONE_ROOT].valid)
+    root_ = {bones[OCTOCAP_BONE_ROOT].head_position[0], bones[OCTOCAP_BONE_ROOT].head_position[1],
+             bones[OCTOCAP_BONE_ROOT].head_position[2]};
+  // The overlay is the measured skeleton: each bone from its head along its rotated rest direction.
   segments_.clear();
   if (options_.skeleton_overlay)
     for (int b = 0; b < OCTOCAP_BONE_COUNT; ++b) {
+      if (!bones[b].valid) continue;
       octocap_bone_info_t info;
       octocap_bone_info(static_cast<uint32_t>(b), &info);
-      if (joints[info.head_joint].valid && joints[info.tail_joint].valid)
-        segments_.emplace_back(position(joints[info.head_joint]), position(joints[info.tail_joint]));
+      const octocap_quat_t& q = bones[b].global_rotation;
+      const Eigen::Vector3f head(bones[b].head_position[0], bones[b].head_position[1], bones[b].head_position[2]);
+      const Eigen::Vector3f dir(info.rest_direction[0], info.rest_direction[1], info.rest_direction[2]);
+      segments_.emplace_back(head, head + Eigen::Quaternionf(q.w, q.x, q.y, q.z) * dir * bones[b].length_m);
     }
 
   joints_.fill(Eigen::Vector3f::Constant(std::numeric_limits<float>::quiet_NaN()));

@@ -22,11 +22,17 @@ class Scene {
  public:
   // Throws std::runtime_error with the library's or assimp's message.
   Scene(const std::string& motion_path, const SceneOptions& options);
+  // A live scene: poses arrive over DDS from `live` (not owned), through take_live().
+  Scene(octocap_subscriber_t* live, const SceneOptions& options);
   ~Scene();
 
   int frame_count() const { return static_cast<int>(frames_); }
   double rate_hz() const { return rate_hz_; }
   void pose(int frame);
+  // Live: waits up to timeout_ms for the next pose and applies it; false when none came.
+  bool take_live(int timeout_ms);
+  bool live() const { return live_ != nullptr; }
+  bool posed() const { return posed_; }
 
   const std::vector<SkinnedVertices>& vertices() const { return skinned_; }
   const Eigen::Affine3f& placement() const { return placement_; }  // model space -> rig frame
@@ -47,14 +53,19 @@ class Scene {
   struct MotionDeleter {
     void operator()(octocap_motion_t* m) const { octocap_motion_destroy(m); }
   };
+  void load_model();
+  void pose_bones(const octocap_bone_pose_t* bones);
+
   std::unique_ptr<octocap_motion_t, MotionDeleter> motion_;
+  octocap_subscriber_t* live_ = nullptr;
+  bool posed_ = false;
   uint32_t frames_ = 0;
   double rate_hz_ = 30;
   SceneOptions options_;
   Character character_;
   BoneMap map_{};
   std::unique_ptr<Retargeter> retarget_;
-  float scale_ = 1;
+  float scale_ = 0;  // set from the motion's (or the first live frame's) leg length
   float floor_y_ = 0;
   Eigen::Vector3f centre_ = Eigen::Vector3f::Zero();
   Eigen::Vector3f root_ = Eigen::Vector3f::Zero();
