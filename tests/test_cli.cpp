@@ -2,6 +2,7 @@
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <regex>
 #include <string>
@@ -11,6 +12,7 @@
 #include "io/bvh.h"
 #include "io/calibration_toml.h"
 #include "io/motion_files.h"
+#include "io/openpose_json.h"
 #include "support/run_command.h"
 #include "support/temp_dir.h"
 
@@ -127,4 +129,29 @@ TEST_CASE("octocap-calibrate refuses what it cannot do, saying why", "[cli][cali
   r = run("--help", OCTOCAP_CALIBRATE_PATH);
   REQUIRE(r.status == 0);
   REQUIRE_THAT(r.output, ContainsSubstring("intrinsics") && ContainsSubstring("extrinsics"));
+}
+
+TEST_CASE("octocap detect writes OpenPose JSON per camera that octocap reads back", "[cli]") {
+  testing::TempDir dir;
+  // Two "cameras", one real photo each: the street scene and the portrait.
+  const std::string photos = std::string(OCTOCAP_SOURCE_DIR) + "/.cache/photos/";
+  std::filesystem::create_directories(dir.path() / "images/cam_a");
+  std::filesystem::create_directories(dir.path() / "images/cam_b");
+  std::filesystem::copy_file(photos + "bus.jpg", dir.path() / "images/cam_a/000.jpg");
+  std::filesystem::copy_file(photos + "astronaut.png", dir.path() / "images/cam_b/000.png");
+  const Run r = run("detect --images " + dir.file("images") + " --output " + dir.file("kp") +
+                    " --model movenet-multipose --detect-mode per-view --detect-threads 1 --debug-images " + dir.file("dbg"));
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  CHECK_THAT(r.output, ContainsSubstring("views with a person:  2 / 2"));
+  for (const char* cam : {"cam_a", "cam_b"}) {
+    const std::string json = dir.file(std::string("kp/") + cam + "_json/" + cam + "_000000000000_keypoints.json");
+    const auto people = octocap::read_openpose_file(json, 17);
+    CHECK(!people.empty());
+    CHECK(std::filesystem::exists(dir.file(std::string("dbg/") + cam + "_frame_000000.png")));
+  }
+  CHECK(octocap::read_openpose_file(dir.file("kp/cam_a_json/cam_a_000000000000_keypoints.json"), 17).size() >= 2);
+  const Run bad = run("detect --images " + dir.file("images") + " --output " + dir.file("kp2") + " --model " + dir.file("none.onnx"));
+  CHECK(bad.status != 0);
+  CHECK_THAT(bad.output, ContainsSubstring("none"));
 }

@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "detect/decoders.h"
+#include "detect/person_pick.h"
 
 using namespace octocap;
 using Catch::Approx;
@@ -138,4 +139,30 @@ TEST_CASE("YOLO-pose rows: threshold, non-maximum suppression, both memory order
     CHECK(people[0].box.x == Approx(75));
   }
   CHECK(decode_yolo_pose(Tensor{{1, static_cast<int64_t>(N), static_cast<int64_t>(A)}, rows}, K, 0.25, 1).size() == 1);
+}
+
+TEST_CASE("person picking: largest, most confident, nearest to last frame, or all best first") {
+  auto person = [](double x, double y, double size, double score) {
+    DetectedPerson p;
+    for (int k = 0; k < 17; ++k) p.keypoints.push_back({x + size * (k % 3), y + size * (k / 3), 0.9});
+    p.score = score;
+    p.box = {x, y, 2 * size, 5 * size};
+    return p;
+  };
+  const std::vector<DetectedPerson> people = {person(0, 0, 10, 0.5), person(300, 0, 40, 0.4), person(600, 0, 20, 0.9)};
+  auto pick = [&](PersonPick how, const Person2D& hint, size_t max) {
+    std::vector<DetectedPerson> p = people;
+    pick_people(p, how, hint, max, 0.3);
+    return p;
+  };
+  CHECK(pick(PersonPick::largest, {}, 4).size() == 1);
+  CHECK(pick(PersonPick::largest, {}, 4)[0].box.x == 300);
+  CHECK(pick(PersonPick::most_confident, {}, 4)[0].box.x == 600);
+  const Person2D near_first = person(2, 1, 10, 0).keypoints;
+  CHECK(pick(PersonPick::nearest_previous, near_first, 4)[0].box.x == 0);
+  CHECK(pick(PersonPick::nearest_previous, {}, 4)[0].box.x == 600);  // no history: most confident
+  const auto all = pick(PersonPick::all, {}, 2);
+  REQUIRE(all.size() == 2);
+  CHECK(all[0].score == Approx(0.9));
+  CHECK(all[1].score == Approx(0.5));
 }

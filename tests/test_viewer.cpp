@@ -2,6 +2,7 @@
 // template, the headless renderer, the viewer's command line (PNG frames, calibrated views, window under Xvfb).
 #include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>
+#include <catch2/matchers/catch_matchers_exception.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
 #include <cmath>
 #include <filesystem>
@@ -351,4 +352,20 @@ TEST_CASE("octocap-viewer renders a live DDS stream from another process") {
   INFO(r.output);
   REQUIRE(r.status == 0);
   for (int f = 0; f < 5; ++f) CHECK(std::filesystem::exists(dir.file("live/frame_00000" + std::to_string(f) + ".png")));
+}
+
+TEST_CASE("a bone map file overrides the name heuristics, and a bad one is refused by name") {
+  const Character c = load_character(default_character_path());
+  BoneMap map = find_bone_map(c);
+  testing::TempDir dir;
+  apply_bone_map_file(c, dir.write("ok.json", R"({"head": "Head", "l_upper_arm": "B_UpperArm_Left"})"), map);
+  CHECK(c.nodes[map[OCTOCAP_BONE_HEAD]].name == "Head");
+  CHECK_THROWS_WITH(apply_bone_map_file(c, dir.write("a.json", R"({"elbow": "Head"})"), map),
+                    ContainsSubstring("\"elbow\" is not an octocap bone"));
+  CHECK_THROWS_WITH(apply_bone_map_file(c, dir.write("b.json", R"({"head": "Nope"})"), map),
+                    ContainsSubstring("no node \"Nope\""));
+  CHECK_THROWS_WITH(apply_bone_map_file(c, dir.write("c.json", "[1, 2"), map), ContainsSubstring("not JSON"));
+  Character headless = c;
+  headless.nodes[find_bone_map(c)[OCTOCAP_BONE_L_UPPER_LEG]].name = "thing";
+  CHECK_THROWS_WITH(Retargeter(headless, find_bone_map(headless)), ContainsSubstring("l_upper_leg"));
 }
