@@ -182,7 +182,11 @@ Retargeter::Retargeter(const Character& c, const BoneMap& map) : c_(c), map_(map
     correction_[b] = Eigen::Quaternionf::Identity();
     // A model's head rests upright whatever its head node's children point at: no correction for it.
     if (map[b] < 0 || tail_node_[b] < 0 || b == OCTOCAP_BONE_HEAD) continue;
-    const Eigen::Vector3f rest = pos(tail_node_[b]) - pos(map[b]);
+    // octocap's root bone runs from between the hips to the left hip, i.e. along the hip line; a model's hips node
+    // usually sits above the thighs, so its line to the left thigh would tilt the pelvis. Use the hip line.
+    const Eigen::Vector3f rest = b == OCTOCAP_BONE_ROOT
+                                     ? Eigen::Vector3f(pos(map[OCTOCAP_BONE_L_UPPER_LEG]) - pos(map[OCTOCAP_BONE_R_UPPER_LEG]))
+                                     : Eigen::Vector3f(pos(tail_node_[b]) - pos(map[b]));
     if (rest.norm() < 1e-6f) continue;
     correction_[b] = Eigen::Quaternionf::FromTwoVectors(rest.normalized(), template_dir(b));
   }
