@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "gltf_export.h"
+#include "check.h"
 #include "offscreen.h"
 #include "scene.h"
 #include "window.h"
@@ -28,9 +29,6 @@ struct Options {
   int max_frames = 0, step = 1;
 };
 
-void check(octocap_result_t r, const std::string& what) {
-  if (r != OCTOCAP_OK) throw std::runtime_error(what + ": " + octocap_last_error());
-}
 
 struct NamedCamera {
   std::string name;

@@ -77,17 +77,13 @@ Wanted wanted(int bone) {
   return {Side::none, {}};
 }
 
-std::string bone_name(int b) {
-  octocap_bone_info_t info;
-  octocap_bone_info(static_cast<uint32_t>(b), &info);
-  return info.name;
-}
-
 octocap_bone_info_t bone_info(int b) {
   octocap_bone_info_t info;
   octocap_bone_info(static_cast<uint32_t>(b), &info);
   return info;
 }
+
+std::string bone_name(int b) { return bone_info(b).name; }
 
 }  // namespace
 

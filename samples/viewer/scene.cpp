@@ -1,16 +1,13 @@
 #include "scene.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-namespace {
+#include "check.h"
 
-void check(octocap_result_t r, const std::string& what) {
-  if (r != OCTOCAP_OK) throw std::runtime_error(what + ": " + octocap_last_error());
-}
+namespace {
 
 Eigen::Vector3f position(const octocap_joint_t& j) { return {j.position[0], j.position[1], j.position[2]}; }
 

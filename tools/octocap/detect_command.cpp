@@ -9,16 +9,12 @@
 #include <vector>
 
 #include "debug_draw.h"
+#include "check.h"
 #include "image_source.h"
 
 namespace fs = std::filesystem;
 
 namespace {
-
-void check(octocap_result_t r, const char* what) {
-  if (r != OCTOCAP_OK)
-    throw std::runtime_error(std::string(what) + ": " + octocap_last_error() + " (" + octocap_result_name(r) + ")");
-}
 
 struct DetectorDeleter {
   void operator()(octocap_detector_t* d) const { octocap_detector_destroy(d); }

@@ -12,18 +12,13 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "check.h"
 #include "debug_draw.h"
 #include "ground_truth.h"
 #include "image_source.h"
 #include "octocap/octocap.h"
 
 namespace {
-
-// Throws with the library's own message; main turns it into a non-zero exit.
-void check(octocap_result_t r, const char* what) {
-  if (r != OCTOCAP_OK)
-    throw std::runtime_error(std::string(what) + ": " + octocap_last_error() + " (" + octocap_result_name(r) + ")");
-}
 
 template <class T, void (*Destroy)(T*)>
 struct Deleter {

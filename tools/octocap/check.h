@@ -1,0 +1,11 @@
+// The command line's one way to stop on a library error: an exception carrying the library's own message.
+#pragma once
+#include <stdexcept>
+#include <string>
+
+#include "octocap/octocap.h"
+
+inline void check(octocap_result_t r, const char* what) {
+  if (r != OCTOCAP_OK)
+    throw std::runtime_error(std::string(what) + ": " + octocap_last_error() + " (" + octocap_result_name(r) + ")");
+}
