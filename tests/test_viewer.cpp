@@ -284,7 +284,8 @@ TEST_CASE("a character rendered from 5 calibrated cameras is solved back from it
   REQUIRE(r.status == 0);
   r = testing::run_command(std::string(OCTOCAP_CLI_PATH) + " solve --images " + dir.file("views") + " --calibration " +
                            kSample + "/calibration.toml --output " + dir.file("out.trc") + " --ground-truth " +
-                           dir.file("truth.csv") + " --filter none --detect-threads 1 --quiet");
+                           dir.file("truth.csv") + " --filter none --detect-threads 1 --quiet --debug-images " +
+                           dir.file("debug"));
   INFO(r.output);
   REQUIRE(r.status == 0);
   const size_t at = r.output.find("MPJPE ");
@@ -294,6 +295,10 @@ TEST_CASE("a character rendered from 5 calibrated cameras is solved back from it
   const size_t solved = r.output.find("keypoints solved:");
   REQUIRE(solved != std::string::npos);
   CHECK(std::stod(r.output.substr(r.output.find('(', solved) + 1)) > 90.0);
+  // What the detector saw, drawn: one picture per camera and frame, at the camera's size.
+  const cv::Mat debug = cv::imread(dir.file("debug/cam_1_frame_000005.png"));
+  CHECK(debug.cols == 960);
+  CHECK(debug.rows == 540);
 }
 
 TEST_CASE("the glTF export carries the skinned character and the motion: re-imported, its joints are the viewer's") {
