@@ -25,6 +25,13 @@ namespace Octocap
         protected override bool ReleaseHandle() { NativeMethods.octocap_recording_destroy(handle); return true; }
     }
 
+    public sealed class MotionHandle : SafeHandle
+    {
+        public MotionHandle() : base(IntPtr.Zero, true) { }
+        public override bool IsInvalid => handle == IntPtr.Zero;
+        protected override bool ReleaseHandle() { NativeMethods.octocap_motion_destroy(handle); return true; }
+    }
+
     public sealed class SubscriberHandle : SafeHandle
     {
         public SubscriberHandle() : base(IntPtr.Zero, true) { }

@@ -282,6 +282,11 @@ namespace Octocap
 
         [DllImport(Lib)] internal static extern Result octocap_recording_open(string directory, Layout layout, out RecordingHandle rec);
         [DllImport(Lib)] internal static extern void octocap_recording_destroy(IntPtr rec);
+        [DllImport(Lib)] internal static extern Result octocap_motion_open(string path, out MotionHandle motion);
+        [DllImport(Lib)] internal static extern void octocap_motion_destroy(IntPtr motion);
+        [DllImport(Lib)] internal static extern Result octocap_motion_info(MotionHandle motion, out uint frameCount, out double rateHz);
+        [DllImport(Lib)] internal static extern Result octocap_motion_joints(MotionHandle motion, uint frame, Joint* output, uint capacity, out uint count);
+        [DllImport(Lib)] internal static extern Result octocap_motion_bones(MotionHandle motion, uint frame, CoordFrame coordFrame, BonePose* output, uint capacity, out uint count);
         [DllImport(Lib)] internal static extern Result octocap_recording_view_count(RecordingHandle rec, out uint count);
         [DllImport(Lib)] internal static extern Result octocap_recording_frame_count(RecordingHandle rec, out uint count);
         [DllImport(Lib)] internal static extern Result octocap_recording_layout(RecordingHandle rec, out Layout layout);
