@@ -383,7 +383,8 @@ OCTOCAP_API octocap_result_t octocap_detector_keypoints(const octocap_detector_t
                                                         uint32_t capacity, uint32_t* count);
 /** Figures of the last run (model, layout, timings). */
 OCTOCAP_API octocap_result_t octocap_detector_info(const octocap_detector_t* detector, octocap_detect_info_t* out);
-/** Version of the ONNX Runtime library in use ("1.32.0"), or "" when this build has none. */
+/** Version of the ONNX Runtime library in use ("1.32.0"), or "" when this build has none (or the library is
+ *  older than octocap's headers). The string stays valid until the next call on the same thread. */
 OCTOCAP_API const char* octocap_onnxruntime_version(void);
 
 /** Up axis of the calibration's world frame. */
