@@ -20,6 +20,7 @@
 #include "io/calibration_toml.h"
 #include "octocap/octocap.h"
 #include "pipeline/session.h"
+#include "support/run_command.h"
 #include "support/temp_dir.h"
 #include "synth.h"
 
@@ -341,18 +342,20 @@ TEST_CASE("real checkerboard images give the lab's focal length within 1%", "[ca
   CHECK(rep.used.size() >= 3);
 }
 
-TEST_CASE("real keypoints of a person give the lab's camera layout", "[calib][real]") {
-  REQUIRE(std::filesystem::exists(kDemo + "/pose"));
+namespace {
+
+// Extrinsics from a recording of a person, aligned onto the lab's Qualisys cameras by a similarity: the worst
+// camera-centre distance (metres).
+double worst_centre_vs_lab(const std::string& keypoints, octocap_calibration_report_t& rep) {
   octocap_calibration_t* lab = nullptr;
   REQUIRE(octocap_calibration_load((kDemo + "/calibration/Calib_qualisys.toml").c_str(), &lab) == OCTOCAP_OK);
   octocap_recording_t* rec = nullptr;
-  REQUIRE(octocap_recording_open((kDemo + "/pose").c_str(), OCTOCAP_LAYOUT_AUTO, &rec) == OCTOCAP_OK);
+  REQUIRE(octocap_recording_open(keypoints.c_str(), OCTOCAP_LAYOUT_AUTO, &rec) == OCTOCAP_OK);
   octocap_extrinsics_options_t opt;
   octocap_extrinsics_options_init(&opt);
   opt.person_height_m = 1.7f;
   opt.up_axis = OCTOCAP_UP_Z;
   octocap_calibration_t* got = nullptr;
-  octocap_calibration_report_t rep;
   const octocap_result_t r = octocap_calibration_solve_extrinsics(lab, rec, &opt, &got, &rep);
   INFO(octocap_last_error());
   REQUIRE(r == OCTOCAP_OK);
@@ -374,10 +377,34 @@ TEST_CASE("real keypoints of a person give the lab's camera layout", "[calib][re
   double worst = 0;
   for (size_t i = 0; i < 4; ++i)
     worst = std::max(worst, ((T * b[i].center().homogeneous()).head<3>() - a[i].center()).norm());
-  INFO("worst camera centre vs Qualisys " << worst * 1000 << " mm; BA RMS " << rep.final_rms_px << " px");
-  CHECK(worst < 0.10);
-  CHECK(rep.points > 1000);
   octocap_calibration_destroy(got);
   octocap_recording_destroy(rec);
   octocap_calibration_destroy(lab);
+  return worst;
+}
+
+}  // namespace
+
+TEST_CASE("real keypoints of a person give the lab's camera layout", "[calib][real]") {
+  REQUIRE(std::filesystem::exists(kDemo + "/pose"));
+  octocap_calibration_report_t rep;
+  const double worst = worst_centre_vs_lab(kDemo + "/pose", rep);
+  INFO("worst camera centre vs Qualisys " << worst * 1000 << " mm; BA RMS " << rep.final_rms_px << " px");
+  CHECK(worst < 0.10);
+  CHECK(rep.points > 1000);
+}
+
+TEST_CASE("markerless end to end: the lab's cameras from their own videos, through octocap's detector", "[calib][real]") {
+  // Pose2Sim's 4 videos -> octocap detect (MoveNet, crops) -> extrinsics from the person -> the Qualisys layout.
+  testing::TempDir dir;
+  const std::string videos = std::string(OCTOCAP_SOURCE_DIR) + "/.cache/pose2sim-0.10.49/Demo_SinglePerson/videos";
+  const testing::Run r = testing::run_command(std::string(OCTOCAP_CLI_PATH) + " detect --images " + videos +
+                                              " --output " + dir.file("kp") + " --detect-threads 1 --quiet");
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  octocap_calibration_report_t rep;
+  const double worst = worst_centre_vs_lab(dir.file("kp"), rep);
+  INFO("worst camera centre vs Qualisys " << worst * 1000 << " mm; BA RMS " << rep.final_rms_px << " px");
+  CHECK(worst < 0.15);
+  CHECK(rep.final_rms_px < 10);
 }
