@@ -313,3 +313,34 @@ TEST_CASE("the mosaic of three real photos maps every person back into its own p
   CHECK(box_of(astro[0], {kAstronautBody}) == 0);
   CHECK(kAstronautHead.holds(astro[0][0]));  // the nose
 }
+
+TEST_CASE("views inferred at once give exactly what one view after another gives") {
+  const cv::Mat bus = cv::imread(kPhotos + "bus.jpg", cv::IMREAD_COLOR);
+  const cv::Mat zidane = cv::imread(kPhotos + "zidane.jpg", cv::IMREAD_COLOR);
+  const cv::Mat astronaut = cv::imread(kPhotos + "astronaut.png", cv::IMREAD_COLOR);
+  const octocap_image_t images[3] = {image_of(bus), image_of(zidane), image_of(astronaut)};
+  std::vector<std::vector<octocap_keypoint2d_t>> results[2];
+  for (int run = 0; run < 2; ++run) {
+    octocap_detector_config_t cfg;
+    octocap_detector_config_init(&cfg);
+    std::snprintf(cfg.model, sizeof cfg.model, "movenet-lightning");
+    cfg.mode = OCTOCAP_DETECT_CROP;
+    cfg.threads = 1;
+    cfg.parallel_views = run == 0 ? 1 : 3;
+    octocap_detector_t* raw = nullptr;
+    REQUIRE(octocap_detector_create(&cfg, &raw) == OCTOCAP_OK);
+    Detector d(raw);
+    for (int frame = 0; frame < 2; ++frame)  // the second frame crops around the first one's people
+      REQUIRE(octocap_detector_run(d.get(), images, 3) == OCTOCAP_OK);
+    for (uint32_t v = 0; v < 3; ++v)
+      for (const auto& p : people_of(d.get(), v)) results[run].push_back(p);
+  }
+  REQUIRE(results[0].size() == results[1].size());
+  REQUIRE(!results[0].empty());
+  for (size_t p = 0; p < results[0].size(); ++p)
+    for (size_t k = 0; k < 17; ++k) {
+      CHECK(results[0][p][k].x == results[1][p][k].x);
+      CHECK(results[0][p][k].y == results[1][p][k].y);
+      CHECK(results[0][p][k].confidence == results[1][p][k].confidence);
+    }
+}

@@ -111,6 +111,7 @@ octocap_detector_config_t DetectorOptions::config() const {
   c.threads = threads;
   c.mosaic_tile_px = mosaic_tile;
   c.max_people = max_people;
+  c.parallel_views = parallel_views;
   return c;
 }
 

@@ -12,6 +12,7 @@ struct DetectorOptions {
   unsigned threads = 0;
   unsigned mosaic_tile = 256;
   unsigned max_people = 4;
+  unsigned parallel_views = 0;
   octocap_detector_config_t config() const;
 };
 

@@ -15,6 +15,7 @@ void add_detector_options(CLI::App* app, DetectorOptions& d) {
   app->add_option("--detect-threads", d.threads, "ONNX Runtime intra-op threads (0: all cores)")->capture_default_str();
   app->add_option("--mosaic-tile", d.mosaic_tile, "Mosaic: tile height in pixels")->capture_default_str();
   app->add_option("--max-people", d.max_people, "People kept per view")->check(CLI::Range(1, 64))->capture_default_str();
+  app->add_option("--parallel-views", d.parallel_views, "Views inferred at once (0: one per core)")->check(CLI::Range(0, 256))->capture_default_str();
 }
 
 }  // namespace

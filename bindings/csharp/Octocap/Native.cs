@@ -162,6 +162,7 @@ namespace Octocap
         public uint MosaicTilePx;
         public uint MaxPeople;
         public float MinConfidence;
+        public uint ParallelViews;
 
         /// <summary>A shipped model's name ("movenet-thunder") or an .onnx path; null or "" for the mode's default.</summary>
         public void SetModel(string model)

@@ -54,6 +54,7 @@ static void layout(void) {
   FIELD(octocap_detector_config_t, mode); FIELD(octocap_detector_config_t, person_pick);
   FIELD(octocap_detector_config_t, threads); FIELD(octocap_detector_config_t, mosaic_tile_px);
   FIELD(octocap_detector_config_t, max_people); FIELD(octocap_detector_config_t, min_confidence);
+  FIELD(octocap_detector_config_t, parallel_views);
   SIZE(octocap_image_t);
   FIELD(octocap_image_t, pixels); FIELD(octocap_image_t, width); FIELD(octocap_image_t, height);
   FIELD(octocap_image_t, stride_bytes); FIELD(octocap_image_t, format);

@@ -31,6 +31,8 @@ DetectorConfig detector_config(const octocap_detector_config_t& c) {
   d.mosaic_tile = static_cast<int>(std::min<uint32_t>(c.mosaic_tile_px, 1u << 20));
   if (c.max_people == 0 || c.max_people > 64) throw Error(Errc::invalid_argument, "detector max_people must be 1..64");
   d.max_people = c.max_people;
+  if (c.parallel_views > 256) throw Error(Errc::invalid_argument, "detector parallel_views must be 0..256");
+  d.parallel_views = static_cast<int>(c.parallel_views);
   require_finite(c.min_confidence, "detector min_confidence");
   d.min_confidence = c.min_confidence;
   return d;
@@ -97,6 +99,7 @@ void octocap_detector_config_init(octocap_detector_config_t* c) {
   c->mosaic_tile_px = 256;
   c->max_people = 4;
   c->min_confidence = 0.3f;
+  c->parallel_views = 0;  // one view per core: every session has 2+ cameras (README "From images")
 }
 
 octocap_result_t octocap_detector_create(const octocap_detector_config_t* cfg, octocap_detector_t** out) {

@@ -1,6 +1,9 @@
 #include "detect/detector.h"
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
+#include <thread>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -71,7 +74,12 @@ Detector::Detector(const DetectorConfig& config) : config_(config) {
   if (config.mode == DetectMode::mosaic && (card_.max_people < 2 || !card_.dynamic_size))
     throw Error(Errc::invalid_argument, "the mosaic needs a multi-person model that accepts any input size (one "
                                         "person per tile); " + card_.name + " is not one: use movenet-multipose");
-  model_ = std::make_unique<OrtModel>(path_, card_, config.threads);
+  if (config.parallel_views < 0) throw Error(Errc::invalid_argument, "parallel views must be >= 0");
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  parallel_ = config.mode == DetectMode::mosaic ? 1 : config.parallel_views == 0 ? cores : config.parallel_views;
+  // Views in parallel share the cores: each inference gets its part unless the caller chose.
+  const int intra = config.threads > 0 ? config.threads : parallel_ > 1 ? std::max(1, cores / parallel_) : 0;
+  model_ = std::make_unique<OrtModel>(path_, card_, intra);
 }
 
 Detector::~Detector() = default;
@@ -85,15 +93,19 @@ std::pair<int, int> Detector::input_size_for(double aspect) const {
 std::vector<DetectedPerson> Detector::infer_region(const ImageView& view, const Rect& region) {
   const auto t0 = Clock::now();
   const auto [w, h] = input_size_for(region.width / region.height);
-  canvas_.reset(w, h);
+  RgbCanvas canvas;
+  canvas.reset(w, h);
   const Rect dst{0, 0, static_cast<double>(w), static_cast<double>(h)};
   const Letterbox box = fit_letterbox(region, dst);
-  draw_letterboxed(view, region, dst, box, canvas_);
+  draw_letterboxed(view, region, dst, box, canvas);
   const auto t1 = Clock::now();
-  timings_.preprocess_ms += std::chrono::duration<double, std::milli>(t1 - t0).count();
-  const std::vector<Tensor> out = model_->run(canvas_);
-  timings_.inference_ms += ms_since(t1);
-  ++timings_.inferences;
+  const std::vector<Tensor> out = model_->run(canvas);
+  {
+    const std::lock_guard<std::mutex> lock(timing_mutex_);
+    timings_.preprocess_ms += std::chrono::duration<double, std::milli>(t1 - t0).count();
+    timings_.inference_ms += ms_since(t1);
+    ++timings_.inferences;
+  }
   std::vector<DetectedPerson> people = decode_pose(card_, out, w, h, layout(card_.layout).keypoints.size());
   // Back to view pixels; keypoints on the padding are the model's guesses at what it cannot see.
   const double vx0 = std::max(0.0, region.x), vy0 = std::max(0.0, region.y);
@@ -123,17 +135,40 @@ std::vector<std::vector<DetectedPerson>> Detector::detect_mosaic(const std::vect
   const int tile_h = round_to_multiple(config_.mosaic_tile, m);
   const int tile_w = round_to_multiple(tile_h * aspects[aspects.size() / 2], m);
   const MosaicLayout layout_plan = plan_mosaic(sizes, tile_w, tile_h);
-  canvas_.reset(layout_plan.width, layout_plan.height);
+  RgbCanvas canvas;
+  canvas.reset(layout_plan.width, layout_plan.height);
   for (size_t v = 0; v < views.size(); ++v)
     draw_letterboxed(views[v], {0, 0, static_cast<double>(views[v].width), static_cast<double>(views[v].height)},
-                     layout_plan.tiles[v].cell, layout_plan.tiles[v].box, canvas_);
+                     layout_plan.tiles[v].cell, layout_plan.tiles[v].box, canvas);
   const auto t1 = Clock::now();
   timings_.preprocess_ms += std::chrono::duration<double, std::milli>(t1 - t0).count();
-  const std::vector<Tensor> out = model_->run(canvas_);
+  const std::vector<Tensor> out = model_->run(canvas);
   timings_.inference_ms += ms_since(t1);
   ++timings_.inferences;
   const auto people = decode_pose(card_, out, layout_plan.width, layout_plan.height, layout(card_.layout).keypoints.size());
   return split_mosaic_people(layout_plan, people, config_.min_confidence);
+}
+
+std::vector<DetectedPerson> Detector::detect_view(size_t v, const ImageView& view) {
+  const Rect whole{0, 0, static_cast<double>(view.width), static_cast<double>(view.height)};
+  if (config_.mode == DetectMode::per_view) return infer_region(view, whole);
+  // Crop: around the hint, else around last frame's person, else find the person on the whole view first.
+  const double aspect = static_cast<double>(card_.input_width) / card_.input_height;
+  const Person2D no_hint;
+  const Person2D& hint = v < hints_.size() ? hints_[v] : no_hint;
+  Rect box = keypoint_box(hint, 0.01);
+  if (box.width <= 0 && box.height <= 0) box = last_boxes_[v];
+  if (box.width <= 0 && box.height <= 0) {
+    auto found = infer_region(view, whole);
+    pick_people(found, config_.pick == PersonPick::all ? PersonPick::most_confident : config_.pick, hint, 1,
+                config_.min_confidence);
+    if (found.empty()) return {};
+    box = keypoint_box(found[0].keypoints, config_.min_confidence);
+    if (box.width <= 0 && box.height <= 0) return {};
+  }
+  auto people = infer_region(view, crop_around(box, aspect));
+  last_boxes_[v] = people.empty() ? Rect{} : keypoint_box(people[0].keypoints, config_.min_confidence);
+  return people;
 }
 
 std::vector<std::vector<DetectedPerson>> Detector::detect(const std::vector<ImageView>& views) {
@@ -147,27 +182,26 @@ std::vector<std::vector<DetectedPerson>> Detector::detect(const std::vector<Imag
   } else {
     result.resize(views.size());
     last_boxes_.resize(views.size());
-    const double aspect = static_cast<double>(card_.input_width) / card_.input_height;
-    for (size_t v = 0; v < views.size(); ++v) {
-      const Rect whole{0, 0, static_cast<double>(views[v].width), static_cast<double>(views[v].height)};
-      if (config_.mode == DetectMode::per_view) {
-        result[v] = infer_region(views[v], whole);
-        continue;
+    // Views are independent here: up to parallel_ of them at once, each writing only its own slots.
+    std::atomic<size_t> next{0};
+    std::exception_ptr failure;
+    std::mutex failure_mutex;
+    auto worker = [&] {
+      for (size_t v = next++; v < views.size(); v = next++) {
+        try {
+          result[v] = detect_view(v, views[v]);
+        } catch (...) {
+          const std::lock_guard<std::mutex> lock(failure_mutex);
+          if (!failure) failure = std::current_exception();
+        }
       }
-      // Crop: around the hint, else around last frame's person, else find the person on the whole view first.
-      Rect box = v < hints_.size() ? keypoint_box(hints_[v], 0.01) : Rect{};
-      if (box.width <= 0 && box.height <= 0) box = last_boxes_[v];
-      if (box.width <= 0 && box.height <= 0) {
-        auto found = infer_region(views[v], whole);
-        pick_people(found, config_.pick == PersonPick::all ? PersonPick::most_confident : config_.pick,
-                    v < hints_.size() ? hints_[v] : Person2D{}, 1, config_.min_confidence);
-        if (found.empty() || found[0].box.width <= 0) continue;
-        box = keypoint_box(found[0].keypoints, config_.min_confidence);
-        if (box.width <= 0 && box.height <= 0) continue;
-      }
-      result[v] = infer_region(views[v], crop_around(box, aspect));
-      last_boxes_[v] = result[v].empty() ? Rect{} : keypoint_box(result[v][0].keypoints, config_.min_confidence);
-    }
+    };
+    const size_t threads = std::min<size_t>(static_cast<size_t>(parallel_), views.size());
+    std::vector<std::thread> pool;
+    for (size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
+    worker();
+    for (auto& t : pool) t.join();
+    if (failure) std::rethrow_exception(failure);
   }
   // A single-person model always answers with someone; fewer than three confident keypoints is nobody.
   for (auto& people : result)

@@ -3,6 +3,7 @@
 // view's own pixel coordinates.
 #pragma once
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -22,7 +23,8 @@ struct DetectorConfig {
   std::string model;  // a path to a .onnx (its card beside it) or a shipped model's name; empty: the mode's default
   DetectMode mode = DetectMode::crop;
   PersonPick pick = PersonPick::all;
-  int threads = 0;           // ONNX Runtime intra-op threads; 0 = its default
+  int threads = 0;           // ONNX Runtime intra-op threads; 0 = its default (all cores / parallel views)
+  int parallel_views = 0;    // views inferred at once (per view and crop); 0 = as many as cores
   int mosaic_tile = 256;     // mosaic cell height in pixels (the width follows the views' aspect)
   size_t max_people = 4;     // per view, for PersonPick::all
   double min_confidence = 0.3;
@@ -57,6 +59,7 @@ class Detector {
 
  private:
   std::vector<DetectedPerson> infer_region(const ImageView& view, const Rect& region);
+  std::vector<DetectedPerson> detect_view(size_t v, const ImageView& view);
   std::vector<std::vector<DetectedPerson>> detect_mosaic(const std::vector<ImageView>& views);
   std::pair<int, int> input_size_for(double aspect) const;
 
@@ -64,7 +67,8 @@ class Detector {
   std::string path_;
   ModelCard card_;
   std::unique_ptr<OrtModel> model_;
-  RgbCanvas canvas_;
+  int parallel_ = 1;
+  std::mutex timing_mutex_;
   std::vector<Person2D> hints_;
   std::vector<Rect> last_boxes_;  // the crop mode's fallback when no hint was given
   DetectTimings timings_;

@@ -50,9 +50,6 @@ struct OrtModel::Impl {
   std::string input_name;
   std::vector<std::string> output_names;
   ONNXTensorElementDataType input_type = ONNX_TENSOR_ELEMENT_DATA_TYPE_FLOAT;
-  std::vector<int32_t> i32;
-  std::vector<uint8_t> u8;
-  std::vector<float> f32;
 };
 
 OrtModel::OrtModel(const std::string& path, const ModelCard& card, int intra_threads)
@@ -126,18 +123,22 @@ std::vector<Tensor> OrtModel::run(const RgbCanvas& canvas) {
   };
   Ort::MemoryInfo memory = Ort::MemoryInfo::CreateCpu(OrtArenaAllocator, OrtMemTypeDefault);
   Ort::Value input{nullptr};
+  // Per call, not per model: views may run on several threads at once (Ort::Session::Run is thread-safe).
+  std::vector<int32_t> i32;
+  std::vector<uint8_t> u8;
+  std::vector<float> f32;
   switch (card_.element) {
     case ElementType::int32:
-      fill(impl_->i32);
-      input = Ort::Value::CreateTensor<int32_t>(memory, impl_->i32.data(), n, shape.data(), shape.size());
+      fill(i32);
+      input = Ort::Value::CreateTensor<int32_t>(memory, i32.data(), n, shape.data(), shape.size());
       break;
     case ElementType::uint8:
-      fill(impl_->u8);
-      input = Ort::Value::CreateTensor<uint8_t>(memory, impl_->u8.data(), n, shape.data(), shape.size());
+      fill(u8);
+      input = Ort::Value::CreateTensor<uint8_t>(memory, u8.data(), n, shape.data(), shape.size());
       break;
     case ElementType::float32:
-      fill(impl_->f32);
-      input = Ort::Value::CreateTensor<float>(memory, impl_->f32.data(), n, shape.data(), shape.size());
+      fill(f32);
+      input = Ort::Value::CreateTensor<float>(memory, f32.data(), n, shape.data(), shape.size());
       break;
   }
   std::vector<const char*> names;

@@ -25,7 +25,7 @@ class OrtModel {
   OrtModel& operator=(const OrtModel&) = delete;
 
   // Runs the network on `canvas` (its size must be the card's, or any multiple of size_multiple for dynamic
-  // models) and returns every output as float.
+  // models) and returns every output as float. Safe to call from several threads at once.
   std::vector<Tensor> run(const RgbCanvas& canvas);
   const ModelCard& card() const { return card_; }
 
