@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "io/motion_files.h"
+#include "pose2sim_reference.h"
 #include "octocap/octocap.h"
 
 namespace {
@@ -109,11 +109,6 @@ void accuracy() {
     std::printf("no calibration: %s\n", octocap_last_error());
     return;
   }
-  const octocap::MotionTrack reference = octocap::read_trc(kDemo + "/opensim/Balancing_for_IK.trc");
-  std::vector<int> ref_index(17, -1);
-  for (uint32_t k = 0; k < 17; ++k)
-    for (size_t m = 0; m < reference.markers.size(); ++m)
-      if (reference.markers[m] == octocap_layout_keypoint_name(OCTOCAP_LAYOUT_COCO_17, k)) ref_index[k] = static_cast<int>(m);
   const auto frames = read_frames(100);
   std::printf("\n## Accuracy on the real 4-camera take (100 frames, triangulation, no filter, 2 threads)\n\n");
   std::printf("| path | keypoints solved | median reprojection px | median / mean distance to Pose2Sim 3D, mm | detect ms/frame |\n");
@@ -126,8 +121,7 @@ void accuracy() {
     cfg.detector = config_of(p, 2);
     octocap_session_t* s = nullptr;
     if (octocap_session_create(&cfg, calib, &s) != OCTOCAP_OK) continue;
-    std::vector<double> reproj, dist;
-    size_t solved = 0;
+    testing::Pose2SimReference score(kDemo + "/opensim/Balancing_for_IK.trc", OCTOCAP_LAYOUT_COCO_17);
     double detect_ms = 0;
     for (size_t f = 0; f < frames.size(); ++f) {
       const auto views = views_of(frames[f], 4);
@@ -140,16 +134,12 @@ void accuracy() {
       octocap_joint_t j[17];
       uint32_t n = 0;
       octocap_session_get_keypoints3d(s, j, 17, &n);
-      for (int k = 0; k < 17; ++k) {
-        if (!j[k].valid) continue;
-        ++solved;
-        reproj.push_back(j[k].reprojection_error_px);
-        if (ref_index[k] < 0) continue;
-        const Eigen::Vector3d ours = octocap::zup_to_yup({j[k].position[0], j[k].position[1], j[k].position[2]});
-        const Eigen::Vector3d theirs = reference.frames[f][ref_index[k]];
-        if (theirs.allFinite()) dist.push_back(1000 * (ours - theirs).norm());
-      }
+      score.add(f, j);
     }
+    std::vector<double> dist;
+    for (double d : score.distance_m) dist.push_back(1000 * d);
+    const size_t solved = score.solved;
+    const std::vector<double>& reproj = score.reprojection_px;
     double mean = 0;
     for (double d : dist) mean += d;
     std::printf("| %s | %.1f %% | %.2f | %.1f / %.1f | %.1f |\n", p.name, 100.0 * solved / (17.0 * frames.size()),

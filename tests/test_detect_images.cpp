@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "io/motion_files.h"
 #include "octocap/octocap.h"
 #include "support/capi_helpers.h"
+#include "support/pose2sim_reference.h"
 
 namespace {
 
@@ -37,12 +37,6 @@ TEST_CASE("solving real multi-camera videos from images matches Pose2Sim's repro
     videos.emplace_back(kVideos + "cam0" + std::to_string(c) + ".mp4");
     REQUIRE(videos.back().isOpened());
   }
-  const octocap::MotionTrack reference = octocap::read_trc(kDemo + "/opensim/Balancing_for_IK.trc");
-  std::vector<int> ref_index(17, -1);
-  for (uint32_t k = 0; k < 17; ++k)
-    for (size_t m = 0; m < reference.markers.size(); ++m)
-      if (reference.markers[m] == octocap_layout_keypoint_name(OCTOCAP_LAYOUT_COCO_17, k)) ref_index[k] = static_cast<int>(m);
-
   for (octocap_detect_mode_t mode : {OCTOCAP_DETECT_CROP, OCTOCAP_DETECT_MOSAIC}) {
     INFO("detect mode " << mode);
     octocap_session_config_t cfg;
@@ -54,8 +48,7 @@ TEST_CASE("solving real multi-camera videos from images matches Pose2Sim's repro
     testing::Session s = testing::make_session(calib.get(), cfg);
     for (auto& v : videos) v.set(cv::CAP_PROP_POS_FRAMES, 0);
     const int frames = 12;
-    std::vector<double> reproj, to_pose2sim;
-    size_t solved = 0;
+    testing::Pose2SimReference score(kDemo + "/opensim/Balancing_for_IK.trc", OCTOCAP_LAYOUT_COCO_17);
     for (int f = 0; f < frames; ++f) {
       std::vector<cv::Mat> images(4);
       std::vector<octocap_image_t> views;
@@ -70,17 +63,10 @@ TEST_CASE("solving real multi-camera videos from images matches Pose2Sim's repro
       CHECK(n >= 17);  // the person is seen by camera 1 in every frame
       octocap_joint_t j[17];
       REQUIRE(octocap_session_get_keypoints3d(s.get(), j, 17, &n) == OCTOCAP_OK);
-      for (int k = 0; k < 17; ++k) {
-        if (!j[k].valid) continue;
-        ++solved;
-        reproj.push_back(j[k].reprojection_error_px);
-        if (ref_index[k] < 0) continue;
-        const Eigen::Vector3d ours = octocap::zup_to_yup({j[k].position[0], j[k].position[1], j[k].position[2]});
-        const Eigen::Vector3d theirs = reference.frames[f][ref_index[k]];
-        if (theirs.allFinite()) to_pose2sim.push_back((ours - theirs).norm());
-      }
+      score.add(static_cast<size_t>(f), j);
     }
-    const double med_px = median(reproj), med_mm = 1000 * median(to_pose2sim);
+    const size_t solved = score.solved;
+    const double med_px = median(score.reprojection_px), med_mm = 1000 * median(score.distance_m);
     INFO("solved " << solved << "/" << frames * 17 << ", median reprojection " << med_px << " px, median distance to "
                    "Pose2Sim " << med_mm << " mm");
     CHECK(solved >= 0.9 * frames * 17);

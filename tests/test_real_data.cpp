@@ -11,6 +11,7 @@
 #include "io/motion_files.h"
 #include "octocap/octocap.h"
 #include "support/capi_helpers.h"
+#include "support/pose2sim_reference.h"
 
 namespace {
 
@@ -41,12 +42,6 @@ TEST_CASE("Pose2Sim's real demo solves as well as Pose2Sim does", "[real]") {
   REQUIRE(frames == 100);
   REQUIRE(views == 4);
 
-  const octocap::MotionTrack reference = octocap::read_trc(kDemo + "/opensim/Balancing_for_IK.trc");
-  std::vector<int> ref_index(25, -1);
-  for (uint32_t k = 0; k < 25; ++k)
-    for (size_t m = 0; m < reference.markers.size(); ++m)
-      if (reference.markers[m] == octocap_layout_keypoint_name(layout, k)) ref_index[k] = static_cast<int>(m);
-
   for (octocap_method_t method : {OCTOCAP_METHOD_SUBDIVISION, OCTOCAP_METHOD_TRIANGULATION}) {
     INFO("method " << method);
     octocap_session_config_t cfg;
@@ -60,8 +55,7 @@ TEST_CASE("Pose2Sim's real demo solves as well as Pose2Sim does", "[real]") {
     REQUIRE(up == OCTOCAP_UP_Z);  // Qualisys lab frame, found from the cameras alone
     std::vector<octocap_keypoint2d_t> buf(25 * 4 * 8);
     std::vector<uint32_t> people(4);
-    std::vector<double> reproj, to_pose2sim;
-    size_t solved = 0;
+    testing::Pose2SimReference score(kDemo + "/opensim/Balancing_for_IK.trc", layout);
     for (uint32_t f = 0; f < frames; ++f) {
       uint32_t needed = 0;
       REQUIRE(octocap_recording_read_frame(rec, f, buf.data(), static_cast<uint32_t>(buf.size()), &needed,
@@ -70,17 +64,10 @@ TEST_CASE("Pose2Sim's real demo solves as well as Pose2Sim does", "[real]") {
       octocap_joint_t j[25];
       uint32_t n = 0;
       REQUIRE(octocap_session_get_keypoints3d(s.get(), j, 25, &n) == OCTOCAP_OK);
-      for (uint32_t k = 0; k < 25; ++k) {
-        if (!j[k].valid) continue;
-        ++solved;
-        reproj.push_back(j[k].reprojection_error_px);
-        if (ref_index[k] < 0) continue;
-        const Eigen::Vector3d ours = octocap::zup_to_yup({j[k].position[0], j[k].position[1], j[k].position[2]});
-        const Eigen::Vector3d theirs = reference.frames[f][ref_index[k]];
-        if (theirs.allFinite()) to_pose2sim.push_back((ours - theirs).norm());
-      }
+      score.add(f, j);
     }
-    const double med_px = median(reproj), med_mm = 1000 * median(to_pose2sim);
+    const size_t solved = score.solved;
+    const double med_px = median(score.reprojection_px), med_mm = 1000 * median(score.distance_m);
     INFO("solved " << solved << "/2500, median reprojection " << med_px << " px, median distance to Pose2Sim "
                    << med_mm << " mm");
     CHECK(solved > 0.95 * 2500);
