@@ -37,13 +37,8 @@ dpkg-deb -x "$TMP"/libonnxruntime-dev_*.deb "$TMP/deb"
 rm -rf "$DEST"
 mkdir -p "$DEST/include" "$DEST/lib"
 cp "$TMP"/deb/usr/include/onnxruntime/*.h "$DEST/include/"
-python3 - "$TMP"/onnxruntime-"$ORT_VERSION"-*.whl "$DEST/lib" "$ORT_VERSION" <<'PY'
-import sys, zipfile
-wheel, dest, version = sys.argv[1:]
-name = f"onnxruntime/capi/libonnxruntime.so.{version}"
-with zipfile.ZipFile(wheel) as z, open(f"{dest}/libonnxruntime.so.{version}", "wb") as out:
-    out.write(z.read(name))
-PY
+python3 "$ROOT/scripts/extract-from-wheel.py" "$TMP"/onnxruntime-"$ORT_VERSION"-*.whl "$DEST/lib" --flatten \
+  "onnxruntime/capi/libonnxruntime.so.$ORT_VERSION"
 ln -sf "libonnxruntime.so.$ORT_VERSION" "$DEST/lib/libonnxruntime.so.1"
 ln -sf "libonnxruntime.so.1" "$DEST/lib/libonnxruntime.so"
 cat > "$DEST/SOURCES.txt" <<TXT

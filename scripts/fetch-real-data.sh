@@ -15,20 +15,9 @@ echo "== fetching pose2sim==0.4.15 (Pose2Sim demo data, BSD-3-Clause)" >&2
 $PIP download --quiet --no-deps --only-binary=:all: --dest "$TMP" pose2sim==0.4.15
 rm -rf "$DEST"
 mkdir -p "$DEST"
-python3 - "$TMP"/pose2sim-0.4.15-*.whl "$DEST" <<'PY'
-import sys, zipfile, os
-wheel, dest = sys.argv[1], sys.argv[2]
-keep = ("Pose2Sim/Demo/calibration/Calib_qualisys.toml", "Pose2Sim/Demo/pose/",
-        "Pose2Sim/Demo/calibration/intrinsics/",
-        "Pose2Sim/Demo/opensim/Balancing_for_IK.trc", "Pose2Sim/Demo/User/Config.toml")
-with zipfile.ZipFile(wheel) as z:
-    for name in z.namelist():
-        if name.startswith(keep) and not name.endswith("/"):
-            out = os.path.join(dest, name[len("Pose2Sim/"):])
-            os.makedirs(os.path.dirname(out), exist_ok=True)
-            with z.open(name) as src, open(out, "wb") as dst:
-                dst.write(src.read())
-PY
+python3 "$ROOT/scripts/extract-from-wheel.py" "$TMP"/pose2sim-0.4.15-*.whl "$DEST" --strip Pose2Sim/ \
+  Pose2Sim/Demo/calibration/Calib_qualisys.toml Pose2Sim/Demo/pose/ Pose2Sim/Demo/calibration/intrinsics/ \
+  Pose2Sim/Demo/opensim/Balancing_for_IK.trc Pose2Sim/Demo/User/Config.toml
 cat > "$DEST/LICENSE-NOTE.txt" <<'TXT'
 From the pose2sim 0.4.15 wheel (PyPI), Pose2Sim/Demo: BSD-3-Clause, (c) David Pagnon.
 TXT

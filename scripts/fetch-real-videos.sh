@@ -14,17 +14,7 @@ echo "== fetching pose2sim==0.10.49 (Pose2Sim demo videos, BSD-3-Clause)" >&2
 $PIP download --quiet --no-deps --only-binary=:all: --dest "$TMP" pose2sim==0.10.49
 rm -rf "$DEST"
 mkdir -p "$DEST"
-python3 - "$TMP"/pose2sim-0.10.49-*.whl "$DEST" <<'PY'
-import sys, zipfile, os
-wheel, dest = sys.argv[1], sys.argv[2]
-keep = ("Pose2Sim/Demo_SinglePerson/videos/", "Pose2Sim/Demo_SinglePerson/calibration/Calib.qca.txt")
-with zipfile.ZipFile(wheel) as z:
-    for name in z.namelist():
-        if name.startswith(keep) and not name.endswith("/"):
-            out = os.path.join(dest, name[len("Pose2Sim/"):])
-            os.makedirs(os.path.dirname(out), exist_ok=True)
-            with z.open(name) as src, open(out, "wb") as dst:
-                dst.write(src.read())
-PY
+python3 "$ROOT/scripts/extract-from-wheel.py" "$TMP"/pose2sim-0.10.49-*.whl "$DEST" --strip Pose2Sim/ \
+  Pose2Sim/Demo_SinglePerson/videos/ Pose2Sim/Demo_SinglePerson/calibration/Calib.qca.txt
 echo "From the pose2sim 0.10.49 wheel (PyPI), Pose2Sim/Demo_SinglePerson: BSD-3-Clause, (c) David Pagnon." > "$DEST/LICENSE-NOTE.txt"
 touch "$DEST/.complete-1"

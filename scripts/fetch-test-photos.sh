@@ -15,17 +15,9 @@ $PIP download --quiet --no-deps --only-binary=:all: --dest "$TMP" "ultralytics==
 $PIP download --quiet --no-deps --only-binary=:all: --python-version 3.11 --implementation cp \
   --platform manylinux_2_28_x86_64 --dest "$TMP" "scikit-image==0.26.0"
 mkdir -p "$DEST"
-python3 - "$TMP" "$DEST" <<'PY'
-import glob, os, sys, zipfile
-tmp, dest = sys.argv[1:]
-wanted = {"ultralytics/assets/bus.jpg", "ultralytics/assets/zidane.jpg",
-          "skimage/data/astronaut.png", "skimage/data/camera.png"}
-for wheel in glob.glob(f"{tmp}/*.whl"):
-    with zipfile.ZipFile(wheel) as z:
-        for name in z.namelist():
-            if name in wanted:
-                with open(os.path.join(dest, os.path.basename(name)), "wb") as out:
-                    out.write(z.read(name))
-PY
+for wheel in "$TMP"/*.whl; do
+  python3 "$ROOT/scripts/extract-from-wheel.py" "$wheel" "$DEST" --flatten ultralytics/assets/bus.jpg \
+    ultralytics/assets/zidane.jpg skimage/data/astronaut.png skimage/data/camera.png
+done
 for f in bus.jpg zidane.jpg astronaut.png camera.png; do [ -f "$DEST/$f" ] || { echo "missing $f" >&2; exit 1; }; done
 touch "$DEST/.complete-1"
