@@ -118,9 +118,14 @@ void accuracy() {
     octocap_session_config_init(&cfg);
     cfg.layout = OCTOCAP_LAYOUT_COCO_17;
     cfg.filter = OCTOCAP_FILTER_NONE;
-    cfg.detector = config_of(p, 2);
     octocap_session_t* s = nullptr;
     if (octocap_session_create(&cfg, calib, &s) != OCTOCAP_OK) continue;
+    const octocap_detector_config_t detector = config_of(p, 2);
+    if (octocap_session_set_detector(s, &detector) != OCTOCAP_OK) {
+      std::printf("| %s | %s |\n", p.name, octocap_last_error());
+      octocap_session_destroy(s);
+      continue;
+    }
     testing::Pose2SimReference score(kDemo + "/opensim/Balancing_for_IK.trc", OCTOCAP_LAYOUT_COCO_17);
     double detect_ms = 0;
     for (size_t f = 0; f < frames.size(); ++f) {

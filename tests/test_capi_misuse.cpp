@@ -145,10 +145,21 @@ TEST_CASE("camera-count mismatch, NaN keypoints, too few views", "[capi][misuse]
     for (const auto& p : j)
       if (p.valid) REQUIRE((std::isfinite(p.position[0]) && std::isfinite(p.position[1]) && std::isfinite(p.position[2])));
   }
-  SECTION("fewer views than needed: an error, an empty frame, and the session goes on") {
+  SECTION("fewer views than needed: a status (not an error), a frame with nobody, and the session goes on") {
     std::vector<uint32_t> people = {1, 0, 0, 0, 0};
     REQUIRE(octocap_session_solve_keypoints(f.session.get(), f.frame.data(), people.data(), 5, 0) ==
-            OCTOCAP_ERROR_NOT_ENOUGH_VIEWS);
+            OCTOCAP_STATUS_NO_PERSON);
+    REQUIRE_FALSE(OCTOCAP_FAILED(OCTOCAP_STATUS_NO_PERSON));
+    octocap_frame_t* frame = nullptr;
+    REQUIRE(octocap_session_get_frame(f.session.get(), &frame) == OCTOCAP_OK);
+    octocap_frame_summary_t summary{};
+    summary.struct_size = sizeof summary;
+    REQUIRE(octocap_frame_get_summary(frame, &summary) == OCTOCAP_OK);
+    CHECK(summary.person_count == 0);
+    octocap_joint_t none[15];
+    uint32_t count = 0;
+    CHECK(octocap_frame_get_joints(frame, 0, none, 15, &count) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+    octocap_frame_release(frame);
     octocap_frame_info_t info;
     REQUIRE(octocap_session_get_frame_info(f.session.get(), &info) == OCTOCAP_OK);
     REQUIRE(info.keypoints_solved == 0);

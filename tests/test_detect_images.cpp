@@ -43,9 +43,12 @@ TEST_CASE("solving real multi-camera videos from images matches Pose2Sim's repro
     octocap_session_config_init(&cfg);
     cfg.layout = OCTOCAP_LAYOUT_COCO_17;
     cfg.filter = OCTOCAP_FILTER_NONE;
-    cfg.detector.mode = mode;
-    cfg.detector.threads = 1;
     testing::Session s = testing::make_session(calib.get(), cfg);
+    octocap_detector_config_t detector;
+    octocap_detector_config_init(&detector);
+    detector.mode = mode;
+    detector.threads = 1;
+    REQUIRE(octocap_session_set_detector(s.get(), &detector) == OCTOCAP_OK);
     for (auto& v : videos) v.set(cv::CAP_PROP_POS_FRAMES, 0);
     const int frames = 12;
     testing::Pose2SimReference score(kDemo + "/opensim/Balancing_for_IK.trc", OCTOCAP_LAYOUT_COCO_17);
@@ -100,13 +103,17 @@ TEST_CASE("solve_images refuses what it cannot do, clearly") {
   // Black frames at a sixteenth of the size: nobody anywhere, too few views, and the session stays usable.
   pixels.assign(68 * 120 * 3, 0);
   views.assign(4, octocap_image_t{pixels.data(), 68, 120, 68 * 3, OCTOCAP_PIXELS_RGB8});
-  CHECK(octocap_session_solve_images(coco.get(), views.data(), 4, 0) == OCTOCAP_ERROR_NOT_ENOUGH_VIEWS);
+  CHECK(octocap_session_solve_images(coco.get(), views.data(), 4, 0) == OCTOCAP_STATUS_NO_PERSON);
   REQUIRE(octocap_session_detections(coco.get(), 2, nullptr, 0, &n) == OCTOCAP_OK);
   CHECK(n == 0);
   views[1].stride_bytes = 10;
   CHECK(octocap_session_solve_images(coco.get(), views.data(), 4, 1) == OCTOCAP_ERROR_INVALID_ARGUMENT);
   CHECK(std::string(octocap_last_error()).find("image 1") != std::string::npos);
-  cfg.detector.struct_size = 3;
-  octocap_session_t* bad = nullptr;
-  CHECK(octocap_session_create(&cfg, calib.get(), &bad) == OCTOCAP_ERROR_STRUCT_SIZE);
+  octocap_detector_config_t detector;
+  octocap_detector_config_init(&detector);
+  detector.struct_size = 3;
+  CHECK(octocap_session_set_detector(coco.get(), &detector) == OCTOCAP_ERROR_STRUCT_SIZE);
+  octocap_detector_config_init(&detector);
+  detector.mode = 7;
+  CHECK(octocap_session_set_detector(coco.get(), &detector) == OCTOCAP_ERROR_INVALID_ARGUMENT);
 }

@@ -9,12 +9,14 @@
 #include <vector>
 
 #include "debug_draw.h"
-#include "check.h"
+#include "octocap/octocap.hpp"
 #include "image_source.h"
 
 namespace fs = std::filesystem;
 
 namespace {
+
+using octocap::check;
 
 struct DetectorDeleter {
   void operator()(octocap_detector_t* d) const { octocap_detector_destroy(d); }

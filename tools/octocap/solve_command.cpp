@@ -6,31 +6,21 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 #include <vector>
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "check.h"
 #include "debug_draw.h"
 #include "ground_truth.h"
 #include "image_source.h"
-#include "octocap/octocap.h"
+#include "octocap/octocap.hpp"
 
 namespace {
 
-template <class T, void (*Destroy)(T*)>
-struct Deleter {
-  void operator()(T* p) const { Destroy(p); }
-};
-using CalibPtr = std::unique_ptr<octocap_calibration_t, Deleter<octocap_calibration_t, octocap_calibration_destroy>>;
-using SessionPtr = std::unique_ptr<octocap_session_t, Deleter<octocap_session_t, octocap_session_destroy>>;
-using RecordingPtr = std::unique_ptr<octocap_recording_t, Deleter<octocap_recording_t, octocap_recording_destroy>>;
-
-// Closing writes the file, and can fail: done explicitly on success; on an error path it only frees.
-void discard_writer(octocap_motion_writer_t* w) { octocap_motion_writer_close(w); }
-using WriterPtr = std::unique_ptr<octocap_motion_writer_t, Deleter<octocap_motion_writer_t, discard_writer>>;
+using octocap::check;
 
 double median(std::vector<double> v) {
   if (v.empty()) return NAN;
@@ -50,17 +40,14 @@ void log_to_stderr(octocap_log_level_t level, const char* message, void*) {
 }
 
 // Each view with what the detector found and where the solved 3D keypoints reproject.
-void write_debug_images(octocap_session_t* session, const octocap_calibration_t* calib, std::vector<cv::Mat>& images,
-                        octocap_layout_t layout, uint32_t K, bool solved, const std::string& dir, uint32_t frame) {
-  std::vector<octocap_joint_t> joints(K);
-  uint32_t count = 0;
-  if (solved) check(octocap_session_get_keypoints3d(session, joints.data(), K, &count), "keypoints");
+void write_debug_images(const octocap::Session& session, const octocap_calibration_t* calib,
+                        std::vector<cv::Mat>& images, octocap_layout_t layout, uint32_t K, const octocap::Frame& frame_3d,
+                        const std::string& dir, uint32_t frame) {
+  const bool solved = frame_3d.person_count() > 0;
+  std::vector<octocap_joint_t> joints;
+  if (solved) joints = frame_3d.keypoints3d(0);
   for (uint32_t v = 0; v < images.size(); ++v) {
-    uint32_t n = 0;
-    check(octocap_session_detections(session, v, nullptr, 0, &n), "detections");
-    std::vector<octocap_keypoint2d_t> people(n);
-    if (n) check(octocap_session_detections(session, v, people.data(), n, &n), "detections");
-    draw_detections(images[v], people, K, layout, 0.3f);
+    draw_detections(images[v], session.detections(v), K, layout, 0.3f);
     std::vector<cv::Point2d> reprojected;
     for (uint32_t k = 0; solved && k < K; ++k) {
       if (!joints[k].valid) continue;
@@ -77,15 +64,14 @@ void write_debug_images(octocap_session_t* session, const octocap_calibration_t*
 
 int solve(const SolveOptions& o) {
   octocap_set_log_callback(log_to_stderr, OCTOCAP_LOG_WARNING, nullptr);
-  octocap_calibration_t* calib_raw = nullptr;
-  check(octocap_calibration_load(o.calibration.c_str(), &calib_raw), "loading the calibration");
-  CalibPtr calib(calib_raw);
-  uint32_t cameras = 0;
-  check(octocap_calibration_camera_count(calib.get(), &cameras), "camera count");
+  if (!std::isfinite(o.rate_hz) || o.rate_hz < 1e-3 || o.rate_hz > 1e5)
+    throw std::runtime_error("--rate must be between 0.001 and 100000 Hz");
+  const octocap::Calibration calib = octocap::Calibration::load(o.calibration);
+  const uint32_t cameras = calib.camera_count();
 
   octocap_layout_t layout = OCTOCAP_LAYOUT_AUTO;
   if (o.layout != "auto") check(octocap_layout_from_name(o.layout.c_str(), &layout), "--layout");
-  RecordingPtr rec;
+  std::optional<octocap::Recording> rec;
   std::unique_ptr<ImageSource> source;
   uint32_t views = 0, frames = 0;
   if (!o.images.empty()) {
@@ -94,14 +80,16 @@ int solve(const SolveOptions& o) {
     frames = static_cast<uint32_t>(source->frame_count());
     if (layout == OCTOCAP_LAYOUT_AUTO) layout = OCTOCAP_LAYOUT_COCO_17;  // the shipped models' layout
   } else {
-    octocap_recording_t* rec_raw = nullptr;
-    check(octocap_recording_open(o.keypoints.c_str(), layout, &rec_raw), "opening the keypoints");
-    rec.reset(rec_raw);
-    check(octocap_recording_view_count(rec.get(), &views), "view count");
-    check(octocap_recording_frame_count(rec.get(), &frames), "frame count");
-    check(octocap_recording_layout(rec.get(), &layout), "layout");
+    rec.emplace(o.keypoints, layout);
+    views = rec->view_count();
+    frames = rec->frame_count();
+    layout = rec->layout();
   }
-  if (o.max_frames) frames = std::min(frames, o.start_frame + o.max_frames);
+  if (o.start_frame >= frames)
+    throw std::runtime_error("--start-frame " + std::to_string(o.start_frame) + " is past the last frame (" +
+                             std::to_string(frames) + " frames)");
+  // 64-bit: a --start-frame + --frames that would wrap 32 bits is clamped to the take, not wrapped.
+  if (o.max_frames) frames = static_cast<uint32_t>(std::min<uint64_t>(frames, uint64_t{o.start_frame} + o.max_frames));
   const std::string input = o.images.empty() ? o.keypoints : o.images;
   if (views != cameras)
     throw std::runtime_error(input + " has " + std::to_string(views) + (source ? " cameras, " : " camera folders, ") + o.calibration +
@@ -128,35 +116,17 @@ int solve(const SolveOptions& o) {
     cfg.stream_source_id = o.source_id;
     std::snprintf(cfg.stream_topic, sizeof cfg.stream_topic, "%s", o.topic.c_str());
   }
-  cfg.detector = o.detector.config();
   if (!o.debug_images.empty()) std::filesystem::create_directories(o.debug_images);
-  octocap_session_t* session_raw = nullptr;
-  check(octocap_session_create(&cfg, calib.get(), &session_raw), "creating the session");
-  SessionPtr session(session_raw);
-  octocap_up_axis_t up = OCTOCAP_UP_Y;
-  check(octocap_session_up_axis(session.get(), &up), "up axis");
-  octocap_method_t method = OCTOCAP_METHOD_AUTO;
-  check(octocap_session_method(session.get(), &method), "method");
-  const std::string method_name = method == OCTOCAP_METHOD_TRIANGULATION ? "triangulation" : "subdivision";
+  octocap::Session session(cfg, calib);
+  if (source) session.set_detector(o.detector.config());
+  const octocap_up_axis_t up = session.up_axis();
+  const std::string method_name = session.method() == OCTOCAP_METHOD_TRIANGULATION ? "triangulation" : "subdivision";
 
-  octocap_motion_writer_t* raw = nullptr;
-  check(octocap_motion_writer_create(o.output.c_str(), OCTOCAP_MOTION_TRC, layout, up, o.rate_hz, &raw), "--output");
-  WriterPtr trc(raw);
-  raw = nullptr;
-  if (!o.csv.empty())
-    check(octocap_motion_writer_create(o.csv.c_str(), OCTOCAP_MOTION_CSV, layout, up, o.rate_hz, &raw), "--csv");
-  WriterPtr csv(raw);
-  raw = nullptr;
-  if (!o.bvh.empty())
-    check(octocap_motion_writer_create(o.bvh.c_str(), OCTOCAP_MOTION_BVH, layout, up, o.rate_hz, &raw), "--bvh");
-  WriterPtr bvh(raw);
-  auto add_frame = [&](bool solved) {
-    for (octocap_motion_writer_t* w : {trc.get(), csv.get(), bvh.get()}) {
-      if (!w) continue;
-      check(solved ? octocap_motion_writer_add_frame(w, session.get()) : octocap_motion_writer_add_empty_frame(w),
-            "writing a frame");
-    }
-  };
+  // Each file is written when closed at the end; a take that fails on the way leaves none behind.
+  std::vector<octocap::MotionWriter> writers;
+  writers.emplace_back(o.output, OCTOCAP_MOTION_TRC, layout, up, o.rate_hz);
+  if (!o.csv.empty()) writers.emplace_back(o.csv, OCTOCAP_MOTION_CSV, layout, up, o.rate_hz);
+  if (!o.bvh.empty()) writers.emplace_back(o.bvh, OCTOCAP_MOTION_BVH, layout, up, o.rate_hz);
 
   const uint32_t K = octocap_layout_keypoint_count(layout);
   GroundTruth gt;
@@ -181,8 +151,7 @@ int solve(const SolveOptions& o) {
   if (o.publish && o.wait_subscribers > 0) {
     const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
     uint32_t readers = 0;
-    while (check(octocap_session_stream_subscribers(session.get(), &readers), "stream subscribers"),
-           readers < o.wait_subscribers && std::chrono::steady_clock::now() < give_up)
+    while ((readers = session.stream_subscribers()) < o.wait_subscribers && std::chrono::steady_clock::now() < give_up)
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
     if (readers < o.wait_subscribers)
       std::fprintf(stderr, "octocap solve: only %u of %u subscribers after 10 s; streaming anyway\n", readers,
@@ -196,50 +165,32 @@ int solve(const SolveOptions& o) {
       std::this_thread::sleep_until(due);
     }
     const int64_t t_us = static_cast<int64_t>(std::llround(f * 1e6 / o.rate_hz));
-    octocap_result_t r = OCTOCAP_OK;
+    octocap_result_t r = OCTOCAP_OK;  // or OCTOCAP_STATUS_NO_PERSON
     std::vector<cv::Mat> images;
     if (source) {
       images = source->read(f);
       std::vector<octocap_image_t> views_c;
       for (const cv::Mat& m : images) views_c.push_back(as_image(m));
-      r = octocap_session_solve_images(session.get(), views_c.data(), views, t_us);
-      if (r != OCTOCAP_OK && r != OCTOCAP_ERROR_NOT_ENOUGH_VIEWS) check(r, "solving a frame from images");
-      octocap_detect_info_t dinfo{};
-      dinfo.struct_size = sizeof dinfo;
-      check(octocap_session_detect_info(session.get(), &dinfo), "detect info");
+      r = session.solve_images(views_c.data(), views, t_us);
+      const octocap_detect_info_t dinfo = session.detect_info();
       detect_ms += dinfo.total_ms;
       detect_model = dinfo.model;
       bool several = false;
-      for (uint32_t v = 0; v < views; ++v) {
-        uint32_t n = 0;
-        check(octocap_session_detections(session.get(), v, nullptr, 0, &n), "detections");
-        several = several || n > K;
-      }
+      for (uint32_t v = 0; v < views; ++v) several = several || session.detections(v).size() > K;
       frames_multi += several;
     } else {
-      uint32_t needed = 0;
-      r = octocap_recording_read_frame(rec.get(), f, buffer.data(), static_cast<uint32_t>(buffer.size()), &needed,
-                                       people.data(), views);
-      if (r == OCTOCAP_ERROR_BUFFER_TOO_SMALL) {
-        buffer.resize(needed);
-        r = octocap_recording_read_frame(rec.get(), f, buffer.data(), needed, &needed, people.data(), views);
-      }
-      check(r, "reading a frame");
+      rec->read_frame(f, buffer, people);
       if (std::any_of(people.begin(), people.end(), [](uint32_t n) { return n > 1; })) ++frames_multi;
-      r = octocap_session_solve_keypoints(session.get(), buffer.data(), people.data(), views, t_us);
+      r = session.solve_keypoints(buffer.data(), people.data(), views, t_us);
     }
+    const octocap::Frame frame = session.frame();
     if (!o.debug_images.empty() && source)
-      write_debug_images(session.get(), calib.get(), images, layout, K, r == OCTOCAP_OK, o.debug_images, f);
-    octocap_frame_info_t info;
-    check(octocap_session_get_frame_info(session.get(), &info), "frame info");
-    solve_ms += info.solve_ms;
-    if (r == OCTOCAP_ERROR_NOT_ENOUGH_VIEWS) {
-      add_frame(false);
-    } else {
-      check(r, "solving a frame");
+      write_debug_images(session, calib.get(), images, layout, K, frame, o.debug_images, f);
+    solve_ms += frame.summary().solve_ms;
+    for (octocap::MotionWriter& w : writers) w.add(frame, 0);
+    if (r == OCTOCAP_OK) {
       ++frames_with_result;
-      uint32_t count = 0;
-      check(octocap_session_get_keypoints3d(session.get(), joints.data(), K, &count), "keypoints");
+      joints = frame.keypoints3d(0);
       for (uint32_t k = 0; k < K; ++k) {
         if (!joints[k].valid) continue;
         ++solved_keypoints;
@@ -256,21 +207,18 @@ int solve(const SolveOptions& o) {
           acc.per_keypoint_n[k] += 1;
         }
       }
-      add_frame(true);
     }
     if (!o.quiet && frames >= 50 && (f + 1) % std::max(1u, frames / 10) == 0)
       std::fprintf(stderr, "\r  frame %u / %u", f + 1, frames);
   }
   if (!o.quiet && frames >= 50) std::fprintf(stderr, "\n");
   if (o.publish) {
-    check(octocap_session_flush_stream(session.get()), "flushing the stream");
+    session.flush_stream();
     std::this_thread::sleep_for(std::chrono::milliseconds(static_cast<int64_t>(o.linger_s * 1000)));
   }
   const double total_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  check(octocap_motion_writer_close(trc.release()), "writing the TRC");
-  if (csv) check(octocap_motion_writer_close(csv.release()), "writing the CSV");
-  if (bvh) check(octocap_motion_writer_close(bvh.release()), "writing the BVH");
+  for (octocap::MotionWriter& w : writers) w.close();
 
   const uint32_t done = frames > o.start_frame ? frames - o.start_frame : 0;  // frames this run solved
   double mean_err = 0;

@@ -48,7 +48,6 @@ static void layout(void) {
   FIELD(octocap_session_config_t, stream_qos); FIELD(octocap_session_config_t, stream_history_depth);
   FIELD(octocap_session_config_t, stream_source_id); FIELD(octocap_session_config_t, stream_topic);
   FIELD(octocap_session_config_t, vmc_port); FIELD(octocap_session_config_t, vmc_host);
-  FIELD(octocap_session_config_t, detector);
   SIZE(octocap_detector_config_t);
   FIELD(octocap_detector_config_t, struct_size); FIELD(octocap_detector_config_t, model);
   FIELD(octocap_detector_config_t, mode); FIELD(octocap_detector_config_t, person_pick);
@@ -73,6 +72,18 @@ static void layout(void) {
   FIELD(octocap_stream_info_t, rejected); FIELD(octocap_stream_info_t, source_id);
   FIELD(octocap_stream_info_t, definition_counter); FIELD(octocap_stream_info_t, layout);
   FIELD(octocap_stream_info_t, has_definition);
+  SIZE(octocap_frame_summary_t);
+  FIELD(octocap_frame_summary_t, struct_size); FIELD(octocap_frame_summary_t, person_count);
+  FIELD(octocap_frame_summary_t, frame_index); FIELD(octocap_frame_summary_t, timestamp_us);
+  FIELD(octocap_frame_summary_t, layout); FIELD(octocap_frame_summary_t, keypoint_count);
+  FIELD(octocap_frame_summary_t, definition_counter); FIELD(octocap_frame_summary_t, source_id);
+  FIELD(octocap_frame_summary_t, view_count); FIELD(octocap_frame_summary_t, joints_in_rig_frame);
+  FIELD(octocap_frame_summary_t, solve_ms);
+  SIZE(octocap_person_t);
+  FIELD(octocap_person_t, struct_size); FIELD(octocap_person_t, id); FIELD(octocap_person_t, keypoints_solved);
+  FIELD(octocap_person_t, keypoints_total); FIELD(octocap_person_t, joints_solved);
+  FIELD(octocap_person_t, views_with_person); FIELD(octocap_person_t, mean_reprojection_error_px);
+  FIELD(octocap_person_t, confidence);
 }
 
 static int fail(const char* what) {
@@ -84,6 +95,7 @@ static int solve(const char* calib_path, const char* dir, const char* out_path) 
   octocap_calibration_t* calib = NULL;
   octocap_recording_t* rec = NULL;
   octocap_session_t* s = NULL;
+  octocap_frame_t* frame = NULL;
   octocap_session_config_t cfg;
   octocap_layout_t lay;
   uint32_t views = 0, frames = 0, f, needed = 0, n = 0;
@@ -104,10 +116,12 @@ static int solve(const char* calib_path, const char* dir, const char* out_path) 
   for (f = 0; f < frames; ++f) {
     if (octocap_recording_read_frame(rec, f, kps, 64 * 64, &needed, people, views) != OCTOCAP_OK) return fail("read");
     if (octocap_session_solve_keypoints(s, kps, people, views, (int64_t)f * 33333) != OCTOCAP_OK) return fail("solve");
-    octocap_session_get_keypoints3d(s, joints, 64, &n);
+    if (octocap_session_get_frame(s, &frame) != OCTOCAP_OK) return fail("frame");
+    octocap_frame_get_keypoints3d(frame, 0, joints, 64, &n);
     fwrite(joints, sizeof joints[0], n, out);
-    octocap_session_get_bones(s, OCTOCAP_FRAME_RIG, bones, OCTOCAP_BONE_COUNT, &n);
+    octocap_frame_get_bones(frame, 0, OCTOCAP_FRAME_RIG, bones, OCTOCAP_BONE_COUNT, &n);
     fwrite(bones, sizeof bones[0], n, out);
+    octocap_frame_release(frame);
   }
   fclose(out);
   free(kps);

@@ -1,30 +1,54 @@
 /**
  * @file octocap.h
- * @brief octocap: markerless multi-camera motion capture. The one public C ABI.
+ * @brief octocap: markerless multi-camera motion capture. The one public C ABI (C99).
  *
- * octocap turns N calibrated camera views of a person into 3D joints and per-bone rotations that drive a
- * rigged avatar. A caller with its own 2D detector enters with 2D keypoints
- * (octocap_session_solve_keypoints); the result is queried per frame.
+ * octocap turns N calibrated camera views of people into 3D joints and per-bone rotations that drive rigged
+ * avatars. Read this header top to bottom: versions and results, the skeleton definition, calibrations, frames
+ * (the one result type), detection, the session that solves frames, streaming, files.
+ *
+ * A minimal program: load a calibration, create a session, give it each frame's 2D keypoints (your detector's)
+ * or camera images (octocap's detector), read the frame:
+ * @code
+ * octocap_calibration_t* calib;  octocap_calibration_load("calibration.toml", &calib);
+ * octocap_session_config_t cfg;  octocap_session_config_init(&cfg);  cfg.layout = OCTOCAP_LAYOUT_COCO_17;
+ * octocap_session_t* s;          octocap_session_create(&cfg, calib, &s);
+ * if (octocap_session_solve_keypoints(s, keypoints, NULL, views, t_us) == OCTOCAP_OK) {
+ *   octocap_frame_t* f;          octocap_session_get_frame(s, &f);
+ *   octocap_bone_pose_t bones[OCTOCAP_BONE_COUNT]; uint32_t n;
+ *   octocap_frame_get_bones(f, 0, OCTOCAP_FRAME_UNITY, bones, OCTOCAP_BONE_COUNT, &n);
+ *   octocap_frame_release(f);
+ * }
+ * @endcode
  *
  * @par Rules that hold for every function
- * - Every fallible call returns an ::octocap_result_t: ::OCTOCAP_OK (0) or a negative error code. The
- *   human-readable reason of the last failure on the calling thread is octocap_last_error().
+ * - Every fallible call returns an ::octocap_result_t: ::OCTOCAP_OK (0), a positive status for a normal outcome
+ *   that produced nothing (::OCTOCAP_STATUS_NO_PERSON, ::OCTOCAP_STATUS_TIMEOUT), or a negative error code. Test
+ *   errors with OCTOCAP_FAILED(). The reason of the last error on the calling thread is octocap_last_error().
  * - No C++ exception and no abort ever crosses this boundary.
- * - Handles are opaque and created/destroyed in pairs; every destroy function accepts NULL. Passing a
+ * - Handles are opaque and created/destroyed in pairs; every destroy/release function accepts NULL. Passing a
  *   destroyed handle is detected (::OCTOCAP_ERROR_INVALID_HANDLE) as long as its memory was not reused by a
  *   new handle of the same type; do not rely on it.
- * - Config structs start with `struct_size`; fill them with their `_init()` function first, so that fields
- *   added later get defaults and old callers keep working.
  * - Buffers are owned by the caller, with explicit capacities. Where the size is unknown, call with a NULL
- *   buffer to learn the count, then call again.
+ *   buffer to learn the count, then call again. Strings are UTF-8 and NUL-terminated.
  * - Enumerations are plain `int32_t` typedefs with named constants, so their size is fixed in every
  *   language and an out-of-range value is an error code, not undefined behaviour.
  * - Per-frame structs are blittable (fixed-width integers and floats, no pointers, no bool) and can be mapped
  *   1:1 from C# with `[StructLayout(LayoutKind.Sequential)]`.
  *
+ * @par Versions and compatibility
+ * The library keeps working with programs built against any earlier header of the same major version (and
+ * against every 0.x header): functions are never removed (superseded ones move to the "Deprecated" group) and
+ * structs only grow at their end. Config structs start with `struct_size`; their `_init()` functions are inline
+ * in this header, so they write exactly the struct the program was compiled with, and the library accepts every
+ * size a released header had (fields a program does not have take their defaults). Output structs that start with
+ * `struct_size` are filled up to the size the caller set. The soname (liboctocap.so.0) changes only if that promise
+ * is ever broken. A program checks at start that the library is not older than its header:
+ * `octocap_version_number() >= OCTOCAP_VERSION_NUMBER` and the same major version.
+ *
  * @par Threads
- * One session (or calibration, recording, writer) is used by one thread at a time. Distinct handles may be
- * used from distinct threads in parallel. The library may run worker threads of its own inside a call.
+ * One session (or calibration, subscriber, recording, writer, motion) is used by one thread at a time. Distinct
+ * handles may be used from distinct threads in parallel. Frames are immutable and may be read from any thread.
+ * The library may run worker threads of its own inside a call, and a streaming session runs one publisher thread.
  *
  * @par Conventions
  * Metres, seconds (timestamps in microseconds), radians. Pixel coordinates have their origin at the centre
@@ -53,7 +77,17 @@
 extern "C" {
 #endif
 
-/** ABI version, bumped on any incompatible change of this header. Compare with octocap_abi_version(). */
+/* ------------------------------------------------------------------------------------------------------ */
+/** @name Versions, results, errors, logging */
+/** @{ */
+
+/** Version of this header. The library's own is octocap_version_number(). */
+#define OCTOCAP_VERSION_MAJOR 1
+#define OCTOCAP_VERSION_MINOR 0
+#define OCTOCAP_VERSION_PATCH 0
+/** MAJOR * 10000 + MINOR * 100 + PATCH: 10000 for 1.0.0. */
+#define OCTOCAP_VERSION_NUMBER (OCTOCAP_VERSION_MAJOR * 10000 + OCTOCAP_VERSION_MINOR * 100 + OCTOCAP_VERSION_PATCH)
+/** ABI line: bumped only by an incompatible change (none so far). Compare with octocap_abi_version(). */
 #define OCTOCAP_ABI_VERSION 1
 
 /** The port VMC protocol receivers (Virtual Motion Capture, VSeeFace, EVMC4U) listen on by default. */
@@ -62,31 +96,36 @@ extern "C" {
 /** Length of the fixed-size name fields, including the terminating NUL. */
 #define OCTOCAP_NAME_CAPACITY 32
 
-/* ------------------------------------------------------------------------------------------------------ */
-/** @name Results, errors, logging, version */
-/** @{ */
-
 /** Result of every fallible call. */
 typedef int32_t octocap_result_t;
-/** Values of ::octocap_result_t. */
+/** Values of ::octocap_result_t: 0 success, positive normal outcomes, negative errors. */
 enum octocap_result_values {
   OCTOCAP_OK = 0,                        /**< Success. */
+  OCTOCAP_STATUS_NO_PERSON = 1,          /**< Not an error: the frame was taken, but too few views saw a person to
+                                              solve one (the frame has no person; the session goes on). */
+  OCTOCAP_STATUS_TIMEOUT = 2,            /**< Not an error: nothing arrived before the timeout. */
   OCTOCAP_ERROR_INVALID_ARGUMENT = -1,   /**< A NULL pointer, wrong size, NaN or out-of-range value. */
   OCTOCAP_ERROR_INVALID_HANDLE = -2,     /**< NULL, destroyed or wrong-type handle. */
-  OCTOCAP_ERROR_STRUCT_SIZE = -3,        /**< A struct's struct_size is not one this library knows. */
+  OCTOCAP_ERROR_STRUCT_SIZE = -3,        /**< A struct's struct_size is not one any version of this header had. */
   OCTOCAP_ERROR_IO = -4,                 /**< A file could not be opened, read or written. */
   OCTOCAP_ERROR_PARSE = -5,              /**< A file is malformed; the message names the file and the fault. */
   OCTOCAP_ERROR_BUFFER_TOO_SMALL = -6,   /**< The caller's buffer is too small; the count tells the size. */
   OCTOCAP_ERROR_CAMERA_MISMATCH = -7,    /**< The number of views differs from the calibration's cameras. */
-  OCTOCAP_ERROR_NOT_ENOUGH_VIEWS = -8,   /**< Fewer views than the solve needs (sigma / min views). */
-  OCTOCAP_ERROR_NO_RESULT = -9,          /**< Nothing solved yet (query before the first solve). */
+  OCTOCAP_ERROR_NOT_ENOUGH_VIEWS = -8,   /**< 0.x only: solves now return ::OCTOCAP_STATUS_NO_PERSON instead. */
+  OCTOCAP_ERROR_NO_RESULT = -9,          /**< Nothing to read yet (a query before the first solve). */
   OCTOCAP_ERROR_UNSUPPORTED = -10,       /**< A feature this build does not include. */
+  OCTOCAP_ERROR_OUT_OF_MEMORY = -11,     /**< An allocation failed; the handle involved stays usable. */
   OCTOCAP_ERROR_INTERNAL = -99           /**< A bug: please report it with the message. */
 };
 
+/** True for an error (negative result), false for ::OCTOCAP_OK and the positive statuses. */
+#define OCTOCAP_FAILED(result) ((result) < 0)
+
 /** Library version as "MAJOR.MINOR.PATCH". The string is static. */
 OCTOCAP_API const char* octocap_version(void);
-/** The ABI version the library was built with; equal to ::OCTOCAP_ABI_VERSION when header and library match. */
+/** Library version as MAJOR * 10000 + MINOR * 100 + PATCH (compare with ::OCTOCAP_VERSION_NUMBER). */
+OCTOCAP_API uint32_t octocap_version_number(void);
+/** The ABI line of the library; equal to ::OCTOCAP_ABI_VERSION for every library this header works with. */
 OCTOCAP_API uint32_t octocap_abi_version(void);
 /** Static name of a result code, e.g. "OCTOCAP_ERROR_PARSE". */
 OCTOCAP_API const char* octocap_result_name(octocap_result_t result);
@@ -111,7 +150,7 @@ typedef void (*octocap_log_callback_t)(octocap_log_level_t level, const char* me
 
 /**
  * Installs a process-wide log sink (NULL removes it) and the lowest level it receives. The library never
- * prints to stdout or stderr itself.
+ * prints to stdout or stderr itself. Call it before creating handles, not while other threads use the library.
  */
 OCTOCAP_API void octocap_set_log_callback(octocap_log_callback_t callback, octocap_log_level_t min_level, void* user);
 
@@ -241,45 +280,118 @@ OCTOCAP_API octocap_result_t octocap_calibration_project(const octocap_calibrati
 /** Destroys a calibration; NULL is accepted. Sessions created from it keep their own copy. */
 OCTOCAP_API void octocap_calibration_destroy(octocap_calibration_t* calib);
 
+/** @} */
+/* ------------------------------------------------------------------------------------------------------ */
+/**
+ * @name Frames: the one result type
+ *
+ * Every source of solved skeletons (a session, a stream subscriber, a motion file) hands out the same frame
+ * handle, read with the same octocap_frame_* queries. A frame is an immutable snapshot: it stays valid, unchanged,
+ * until it is released, whatever happens to its source afterwards (even its destruction), and may be read from any
+ * thread. Each octocap_*_get_frame / take_frame call returns a new handle that the caller releases.
+ *
+ * A frame holds 0..N people, each with a stable `id` within its source, its layout keypoints, the skeleton's
+ * joints and the bone poses. What does not change per frame (the keypoint layout's names, the bone table and its
+ * rest directions) is the skeleton definition: read it once with octocap_layout_keypoint_name(),
+ * octocap_joint_name() and octocap_bone_info(), and again when octocap_frame_summary_t.definition_counter changes.
+ */
+/** @{ */
+
+/** Opaque, immutable, solved frame. */
+typedef struct octocap_frame_t octocap_frame_t;
+
+/** A solved 3D point (a layout keypoint or a skeleton joint). */
+typedef struct octocap_joint_t {
+  float position[3];           /**< Metres: the calibration's world frame, or the rig
+                                    frame where octocap_frame_summary_t.joints_in_rig_frame says so. Zero when missing. */
+  float confidence;            /**< Mean 2D confidence of the supporting views; 0 when missing. */
+  float reprojection_error_px; /**< Mean distance (px) between the reprojection of the solved point (before the
+                                    temporal filter) and the supporting detections. */
+  uint32_t views_used;         /**< Number of views that supported the point. */
+  uint32_t valid;              /**< 1 when solved, 0 when missing (never a guess). */
+} octocap_joint_t;
+
+/** Coordinate frame for bone queries. */
+typedef int32_t octocap_coord_frame_t;
+/** Values of ::octocap_coord_frame_t. */
+enum octocap_coord_frame_values {
+  OCTOCAP_FRAME_RIG = 0,    /**< Right-handed, Y up, character faces +Z in the T-pose. */
+  OCTOCAP_FRAME_UNITY = 1,  /**< Left-handed, Y up, +Z forward (X mirrored). */
+  OCTOCAP_FRAME_GODOT = 2   /**< Right-handed, Y up, character faces -Z (turned 180 degrees about Y). */
+};
+
+/** Quaternion (x, y, z, w). */
+typedef struct octocap_quat_t {
+  float x, y, z, w;
+} octocap_quat_t;
+
+/** The pose of one bone in a frame. */
+typedef struct octocap_bone_pose_t {
+  octocap_quat_t local_rotation;  /**< Rotation relative to the parent bone, from the T-pose (identity = T-pose). */
+  octocap_quat_t global_rotation; /**< Rotation in the chosen frame, from the T-pose. */
+  float head_position[3];         /**< Where the bone starts, chosen frame, metres. */
+  float length_m;                 /**< Measured length this frame. */
+  uint32_t valid;                 /**< 0 when a joint of the bone is missing; rotations are then identity. */
+} octocap_bone_pose_t;
+
+/** What a frame holds. `struct_size` is set by the caller (sizeof); the library fills what it knows of that size. */
+typedef struct octocap_frame_summary_t {
+  uint32_t struct_size;         /**< Set by the caller to sizeof(octocap_frame_summary_t). */
+  uint32_t person_count;        /**< People in this frame (0 when nothing was solved). */
+  int64_t frame_index;          /**< The source's frame number (a session starts at its first_frame_index). */
+  int64_t timestamp_us;         /**< Frame time given to the solve (0 for motion files). */
+  octocap_layout_t layout;      /**< Layout of the keypoints of every person. */
+  uint32_t keypoint_count;      /**< Keypoints per person (the layout's count, 0 for motion files: joints only). */
+  uint32_t definition_counter;  /**< Changes whenever the skeleton definition may have changed (another source,
+                                     another layout): re-read the definition then. Never 0. */
+  uint32_t source_id;           /**< The publisher's id for received frames; 0 for local sources. */
+  uint32_t view_count;          /**< Views given to the solve (0 for motion files). */
+  uint32_t joints_in_rig_frame; /**< 1 when joint and keypoint positions are in the rig frame (motion files), 0 when
+                                     in the calibration's world frame. */
+  float solve_ms;               /**< Wall time of the 3D solve (0 when not solved here). */
+} octocap_frame_summary_t;
+
+/** One person of a frame. `struct_size` is set by the caller. */
+typedef struct octocap_person_t {
+  uint32_t struct_size;         /**< Set by the caller to sizeof(octocap_person_t). */
+  uint32_t id;                  /**< Stable within the source while the person is tracked; never 0. */
+  uint32_t keypoints_solved;    /**< Layout keypoints with valid = 1. */
+  uint32_t keypoints_total;     /**< Layout keypoints. */
+  uint32_t joints_solved;       /**< Skeleton joints with valid = 1. */
+  uint32_t views_with_person;   /**< Views in which this person was seen. */
+  float mean_reprojection_error_px; /**< Mean over the solved keypoints (before the temporal filter). */
+  float confidence;             /**< Mean 2D confidence over the solved keypoints. */
+} octocap_person_t;
+
+/** Fills `out` (whose struct_size the caller set). Errors: INVALID_HANDLE, INVALID_ARGUMENT, STRUCT_SIZE. */
+OCTOCAP_API octocap_result_t octocap_frame_get_summary(const octocap_frame_t* frame, octocap_frame_summary_t* out);
+/** Person `person` (0 .. person_count - 1). Errors: as octocap_frame_get_summary(), INVALID_ARGUMENT for an index
+ *  out of range. */
+OCTOCAP_API octocap_result_t octocap_frame_get_person(const octocap_frame_t* frame, uint32_t person,
+                                                      octocap_person_t* out);
+/** The layout keypoints of `person` in 3D (two-call pattern: NULL `out` gives the count; BUFFER_TOO_SMALL when
+ *  `capacity` is short, with the count set). */
+OCTOCAP_API octocap_result_t octocap_frame_get_keypoints3d(const octocap_frame_t* frame, uint32_t person,
+                                                           octocap_joint_t* out, uint32_t capacity, uint32_t* count);
+/** The ::OCTOCAP_JOINT_COUNT skeleton joints of `person` (two-call pattern). */
+OCTOCAP_API octocap_result_t octocap_frame_get_joints(const octocap_frame_t* frame, uint32_t person,
+                                                      octocap_joint_t* out, uint32_t capacity, uint32_t* count);
+/** The ::OCTOCAP_BONE_COUNT bone poses of `person`, converted to `coord_frame` (two-call pattern). Errors also:
+ *  INVALID_ARGUMENT for an unknown coordinate frame. */
+OCTOCAP_API octocap_result_t octocap_frame_get_bones(const octocap_frame_t* frame, uint32_t person,
+                                                     octocap_coord_frame_t coord_frame, octocap_bone_pose_t* out,
+                                                     uint32_t capacity, uint32_t* count);
+/** For each view, the index of the 2D person (in the solve's input) that became `person`, -1 where none; count =
+ *  view_count (two-call pattern). */
+OCTOCAP_API octocap_result_t octocap_frame_get_person_views(const octocap_frame_t* frame, uint32_t person,
+                                                            int32_t* out, uint32_t capacity, uint32_t* count);
+/** Releases a frame; NULL is accepted. */
+OCTOCAP_API void octocap_frame_release(octocap_frame_t* frame);
 
 /** @} */
 /* ------------------------------------------------------------------------------------------------------ */
-/** @name Session: per-frame solve */
+/** @name 2D detection (ONNX Runtime): people's keypoints in camera images */
 /** @{ */
-
-/** Opaque session: solver state for one capture (previous frame, filter, person tracking). */
-typedef struct octocap_session_t octocap_session_t;
-
-/** 3D method. */
-typedef int32_t octocap_method_t;
-/** Values of ::octocap_method_t. */
-enum octocap_method_values {
-  OCTOCAP_METHOD_SUBDIVISION = 0,   /**< The paper's iterative space subdivision. */
-  OCTOCAP_METHOD_TRIANGULATION = 1, /**< Confidence-weighted DLT with outlier-view rejection. */
-  OCTOCAP_METHOD_AUTO = 2           /**< Subdivision with 5 or more cameras, triangulation with fewer: what
-                                         measured more accurate for each (README, "Choosing the defaults"). */
-};
-
-/** Temporal filter. */
-typedef int32_t octocap_filter_t;
-/** Values of ::octocap_filter_t. */
-enum octocap_filter_values {
-  OCTOCAP_FILTER_NONE = 0,
-  OCTOCAP_FILTER_ONE_EURO = 1  /**< Causal One Euro filter: smooth when slow, no lag when fast. */
-};
-
-/** QoS profile of a skeleton stream; publisher and subscriber must use the same one. */
-typedef int32_t octocap_stream_qos_t;
-/** Values of ::octocap_stream_qos_t. */
-enum octocap_stream_qos_t_values {
-  OCTOCAP_QOS_LIVE = 0,   /**< BEST_EFFORT, VOLATILE, KEEP_LAST 1: the newest pose, never an old one late (engines). */
-  OCTOCAP_QOS_RECORD = 1  /**< RELIABLE, TRANSIENT_LOCAL, KEEP_LAST depth: every frame; late joiners get the last
-                               `depth` poses (recorders). */
-};
-
-/* ---------------------------------------------------------------------------------------------------------
- * 2D detection (ONNX Runtime)
- * ------------------------------------------------------------------------------------------------------- */
 
 /** One 2D keypoint in pixels. confidence <= 0 (or x, y = 0, 0 as OpenPose writes it) means "not detected". */
 typedef struct octocap_keypoint2d_t {
@@ -311,7 +423,7 @@ typedef struct octocap_image_t {
 
 /** How N views are given to the network. */
 typedef int32_t octocap_detect_mode_t;
-/** Values of ::octocap_detect_mode_t (README "Detecting" has the measured trade-off). */
+/** Values of ::octocap_detect_mode_t. */
 enum octocap_detect_mode_values {
   OCTOCAP_DETECT_PER_VIEW = 0, /**< One inference per view on the whole view, letterboxed. */
   OCTOCAP_DETECT_MOSAIC = 1,   /**< The paper's merged image: every view down-sampled into one tile, one inference
@@ -338,19 +450,24 @@ typedef struct octocap_detector_config_t {
                                         "movenet-multipose") looked up in $OCTOCAP_MODELS_DIR, else the build's
                                         models directory. Empty (default): movenet-thunder, or movenet-multipose
                                         for the mosaic. */
-  octocap_detect_mode_t mode;      /**< Default ::OCTOCAP_DETECT_CROP (measured: most keypoints, closest 3D). */
+  octocap_detect_mode_t mode;      /**< Default ::OCTOCAP_DETECT_CROP (of the three, the one that
+                                      finds the most keypoints and solves closest to a reference 3D). */
   octocap_person_pick_t person_pick; /**< Default ::OCTOCAP_PICK_ALL. */
   uint32_t threads;                /**< ONNX Runtime intra-op threads; 0 = all cores. Default 0. */
   uint32_t mosaic_tile_px;         /**< Mosaic: height of each view's tile (the width follows the views' aspect). Default 256. */
   uint32_t max_people;             /**< People kept per view with ::OCTOCAP_PICK_ALL. Default 4. */
   float min_confidence;            /**< Keypoints below it do not place a person in a mosaic tile or a crop. Default 0.3. */
   uint32_t parallel_views;         /**< Per view and crop: views inferred at once, each on its share of the cores
-                                        (when threads = 0). 0 = one per core (default: 36 % faster than one view
-                                        after another on 4 views, 2 cores); 1 = one after another. */
+                                        (when threads = 0). 0 = one per core (default); 1 = one after another. */
 } octocap_detector_config_t;
 
-/** Fills `cfg` with defaults and sets its struct_size. */
-OCTOCAP_API void octocap_detector_config_init(octocap_detector_config_t* cfg);
+/** Fills the first `struct_size` bytes of `cfg` with defaults and sets its struct_size: ::OCTOCAP_ERROR_STRUCT_SIZE
+ *  for a size no version of this header had. Call it through octocap_detector_config_init(). */
+OCTOCAP_API octocap_result_t octocap_detector_config_defaults(octocap_detector_config_t* cfg, uint32_t struct_size);
+/** Fills `cfg` with this library's defaults. Inline, so that it never writes past the struct the caller was built with. */
+static inline void octocap_detector_config_init(octocap_detector_config_t* cfg) {
+  (void)octocap_detector_config_defaults(cfg, (uint32_t)sizeof *cfg);
+}
 
 /** Figures of the last detection. */
 typedef struct octocap_detect_info_t {
@@ -374,7 +491,8 @@ typedef struct octocap_detector_t octocap_detector_t;
 OCTOCAP_API octocap_result_t octocap_detector_create(const octocap_detector_config_t* cfg, octocap_detector_t** out);
 /** Destroys a detector; NULL is accepted. */
 OCTOCAP_API void octocap_detector_destroy(octocap_detector_t* detector);
-/** Detects people in `count` images (views of one instant, or unrelated pictures). */
+/** Detects people in `count` images (views of one instant, or unrelated pictures). Errors: INVALID_ARGUMENT for a bad
+ *  image (NULL pixels, zero size, short stride, unknown format). */
 OCTOCAP_API octocap_result_t octocap_detector_run(octocap_detector_t* detector, const octocap_image_t* images,
                                                   uint32_t count);
 /** People found in image `view` by the last run, best first. */
@@ -390,6 +508,41 @@ OCTOCAP_API octocap_result_t octocap_detector_info(const octocap_detector_t* det
  *  older than octocap's headers). The string stays valid until the next call on the same thread. */
 OCTOCAP_API const char* octocap_onnxruntime_version(void);
 
+/** @} */
+/* ------------------------------------------------------------------------------------------------------ */
+/** @name Session: one capture, solved frame by frame */
+/** @{ */
+
+/** Opaque session: solver state for one capture (previous frame, filter, person tracking). */
+typedef struct octocap_session_t octocap_session_t;
+
+/** 3D method. */
+typedef int32_t octocap_method_t;
+/** Values of ::octocap_method_t. */
+enum octocap_method_values {
+  OCTOCAP_METHOD_SUBDIVISION = 0,   /**< The paper's iterative space subdivision. */
+  OCTOCAP_METHOD_TRIANGULATION = 1, /**< Confidence-weighted DLT with outlier-view rejection. */
+  OCTOCAP_METHOD_AUTO = 2           /**< Subdivision with 5 or more cameras, triangulation with fewer (the more
+                                         accurate of the two for each case). */
+};
+
+/** Temporal filter. */
+typedef int32_t octocap_filter_t;
+/** Values of ::octocap_filter_t. */
+enum octocap_filter_values {
+  OCTOCAP_FILTER_NONE = 0,
+  OCTOCAP_FILTER_ONE_EURO = 1  /**< Causal One Euro filter: smooth when slow, no lag when fast. */
+};
+
+/** QoS profile of a skeleton stream; publisher and subscriber must use the same one. */
+typedef int32_t octocap_stream_qos_t;
+/** Values of ::octocap_stream_qos_t. */
+enum octocap_stream_qos_t_values {
+  OCTOCAP_QOS_LIVE = 0,   /**< BEST_EFFORT, VOLATILE, KEEP_LAST 1: the newest pose, never an old one late (engines). */
+  OCTOCAP_QOS_RECORD = 1  /**< RELIABLE, TRANSIENT_LOCAL, KEEP_LAST depth: every frame; late joiners get the last
+                               `depth` poses (recorders). */
+};
+
 /** Up axis of the calibration's world frame. */
 typedef int32_t octocap_up_axis_t;
 /** Values of ::octocap_up_axis_t. */
@@ -399,7 +552,6 @@ enum octocap_up_axis_values {
   OCTOCAP_UP_AUTO = 2  /**< Decide from the cameras: upright cameras' image "down" axes point to world down. */
 };
 
-/** Session configuration. Fill with octocap_session_config_init() first. */
 typedef struct octocap_session_config_t {
   uint32_t struct_size;          /**< sizeof(octocap_session_config_t). */
   octocap_layout_t layout;       /**< Keypoint layout of the 2D input (AUTO is not allowed here). Default BODY_25. */
@@ -408,17 +560,17 @@ typedef struct octocap_session_config_t {
   octocap_up_axis_t up_axis;     /**< Default AUTO; see octocap_session_up_axis() for the resolved one. */
   uint32_t sigma;                /**< Views a cube must be supported by. 0 = camera count - 1 (min 2). Clamped to the views that saw the joint, never below min_views. */
   uint32_t min_views;            /**< Fewest views a joint is solved from. Default 2. */
-  float delta_m;                 /**< Smallest cube edge, metres. Default 0.01. */
+  float delta_m;                 /**< Smallest cube edge, metres. Default 0.01; at least 0.001. */
   float pixel_tolerance;         /**< Subdivision: a detection within this many pixels of a cube's projection supports it. Default 4. */
-  uint32_t max_candidates;       /**< Subdivision: candidate cubes kept per level, best supported and closest to the rays first (bounds the cost). Default 8. */
+  uint32_t max_candidates;       /**< Subdivision: candidate cubes kept per level, best supported and closest to the rays first
+                                      (bounds the cost). Default 8; at most 4096. */
   float min_confidence;          /**< 2D keypoints below this confidence are treated as missing. Default 0.3. */
   float outlier_threshold_px;    /**< A view farther than this from the joint's reprojection is rejected. Default 15. */
   float volume_min[3];           /**< Capture volume (world, metres). When min == max, it is derived from the calibration. */
   float volume_max[3];
   float filter_min_cutoff_hz;    /**< One Euro min cutoff. Default 1.5. */
-  float filter_beta;             /**< One Euro speed coefficient (1/m). Default 20 (see README for the measurements). */
+  float filter_beta;             /**< One Euro speed coefficient (1/m). Default 20. */
   uint32_t worker_threads;       /**< Threads used across joints; 0 = hardware concurrency, 1 = none. */
-  /* Added in 0.2 (a caller compiled against 0.1 passes the smaller struct_size and gets the defaults). */
   int64_t first_frame_index;     /**< Frame numbers start here (default 0): a resumed take keeps its numbering. */
   uint32_t stream_enable;        /**< 1: publish every solved frame over DDS (see "Streaming"). Default 0. */
   uint32_t stream_domain_id;     /**< DDS domain. Default 0. */
@@ -429,38 +581,46 @@ typedef struct octocap_session_config_t {
   uint32_t vmc_port;             /**< Non-zero: also send every frame as VMC protocol (OSC/UDP) to this port;
                                       VMC's usual port is ::OCTOCAP_VMC_DEFAULT_PORT. Default 0 (off). */
   char vmc_host[64];             /**< Receiver of the VMC output. Default "127.0.0.1". */
-  /* Added in 0.3. */
-  octocap_detector_config_t detector; /**< 2D detection for octocap_session_solve_images(); the model is loaded on
-                                           the first such call and must give the session's layout (COCO_17 for the
-                                           shipped models). */
 } octocap_session_config_t;
 
 /** Fills `cfg` with defaults and sets its struct_size. */
-OCTOCAP_API void octocap_session_config_init(octocap_session_config_t* cfg);
 
 /**
- * Creates a session. `calib` is copied; it may be destroyed afterwards. Fails on a config with a wrong
- * struct_size, NaN or out-of-range values, or a calibration with fewer than 2 cameras.
+ * Fills the first `struct_size` bytes of `cfg` with defaults and sets its struct_size. Errors: INVALID_ARGUMENT
+ * (NULL), STRUCT_SIZE (a size no version of this header had). Call it through octocap_session_config_init().
+ */
+OCTOCAP_API octocap_result_t octocap_session_config_defaults(octocap_session_config_t* cfg, uint32_t struct_size);
+/** Fills `cfg` with this library's defaults. Inline, so that it never writes past the struct the caller was built with. */
+static inline void octocap_session_config_init(octocap_session_config_t* cfg) {
+  (void)octocap_session_config_defaults(cfg, (uint32_t)sizeof *cfg);
+}
+
+/**
+ * Creates a session. `calib` is copied; it may be destroyed afterwards. Errors: STRUCT_SIZE (a struct_size no
+ * version of this header had), INVALID_ARGUMENT (NaN or out-of-range values, a config whose per-frame cost has no
+ * bound, a calibration with fewer than 2 cameras or fewer cameras than min_views), INVALID_HANDLE, OUT_OF_MEMORY.
  */
 OCTOCAP_API octocap_result_t octocap_session_create(const octocap_session_config_t* cfg,
                                                     const octocap_calibration_t* calib,
                                                     octocap_session_t** out);
-/** Destroys a session; NULL is accepted. */
+/** Destroys a session; NULL is accepted. Frames taken from it stay valid. */
 OCTOCAP_API void octocap_session_destroy(octocap_session_t* session);
 
 /**
  * Solves one frame from 2D keypoints.
  *
  * @param keypoints  Flat array: for view 0 its people one after the other, then view 1, ... Each person is
- *                   octocap_layout_keypoint_count(layout) keypoints in the layout's order.
- * @param people_per_view  view_count counts (0 = nobody detected in that view), or NULL for exactly one
+ *                   octocap_layout_keypoint_count(layout) keypoints in the layout's order. NaN, infinite,
+ *                   zero-confidence and (0, 0) keypoints count as "not detected".
+ * @param people_per_view  view_count counts (0 = nobody detected in that view; at most 64), or NULL for exactly one
  *                   person per view. With several people in a view, the session picks the one who agrees
  *                   with the other views and with the previous frame.
  * @param view_count Must equal the calibration's camera count (cameras in calibration order).
  * @param timestamp_us  Frame time in microseconds; must increase for the filter to work.
- * @return OCTOCAP_OK also when some joints could not be solved (they are reported missing);
- *         OCTOCAP_ERROR_NOT_ENOUGH_VIEWS when fewer than min_views views hold a person (the frame is
- *         then empty and the session stays usable).
+ * @return ::OCTOCAP_OK when a person was solved (some joints may still be missing: they are reported so);
+ *         ::OCTOCAP_STATUS_NO_PERSON when fewer than min_views views hold a person (the frame has no person and
+ *         the session stays usable); errors: CAMERA_MISMATCH, INVALID_ARGUMENT (NULL keypoints with people),
+ *         INVALID_HANDLE.
  */
 OCTOCAP_API octocap_result_t octocap_session_solve_keypoints(octocap_session_t* session,
                                                              const octocap_keypoint2d_t* keypoints,
@@ -468,25 +628,39 @@ OCTOCAP_API octocap_result_t octocap_session_solve_keypoints(octocap_session_t* 
                                                              uint32_t view_count, int64_t timestamp_us);
 
 /**
- * Solves one frame from camera images: 2D detection (the config's detector), then the same solve as
+ * Sets the 2D detector octocap_session_solve_images() uses, and loads its model now (without a call, the default
+ * detector is loaded on the first octocap_session_solve_images()). The model must give the session's layout
+ * (COCO_17 for the shipped models). Errors: those of octocap_detector_create(), and INVALID_ARGUMENT for a model
+ * of another layout.
+ */
+OCTOCAP_API octocap_result_t octocap_session_set_detector(octocap_session_t* session,
+                                                          const octocap_detector_config_t* cfg);
+
+/**
+ * Solves one frame from camera images: 2D detection (see octocap_session_set_detector()), then the same solve as
  * octocap_session_solve_keypoints().
  *
- * @param images     view_count images in calibration order, any sizes (each is mapped back to its own pixels;
- *                   they should be the sizes the calibration was made at).
- * @return As octocap_session_solve_keypoints(); also OCTOCAP_ERROR_INVALID_ARGUMENT for a bad image (NULL pixels,
- *         zero size, short stride, unknown format) or a model whose layout differs from the session's, and the
- *         detector's errors (see octocap_detector_create()) on the first call.
+ * @param images     view_count images in calibration order. An image at another size than its camera's calibrated
+ *                   size is scaled to it when the aspect ratio is the same, and refused otherwise.
+ * @return As octocap_session_solve_keypoints(); also INVALID_ARGUMENT for a bad image (NULL pixels, zero size,
+ *         short stride, unknown format, another aspect ratio), and the detector's errors on the first call.
  */
 OCTOCAP_API octocap_result_t octocap_session_solve_images(octocap_session_t* session, const octocap_image_t* images,
                                                           uint32_t view_count, int64_t timestamp_us);
 
+/**
+ * The last solved frame, as a new frame handle the caller releases with octocap_frame_release(). Errors:
+ * NO_RESULT before the first solve, INVALID_HANDLE, OUT_OF_MEMORY.
+ */
+OCTOCAP_API octocap_result_t octocap_session_get_frame(const octocap_session_t* session, octocap_frame_t** out);
+
 /** The 2D keypoints the detector found in `view` during the last octocap_session_solve_images(): every person kept
  *  (keypoint_count each, the session's layout) one after the other; `count` = people x keypoints. Engines draw
- *  them over the camera image. */
+ *  them over the camera image. Errors: NO_RESULT before the first octocap_session_solve_images(). */
 OCTOCAP_API octocap_result_t octocap_session_detections(const octocap_session_t* session, uint32_t view,
                                                         octocap_keypoint2d_t* out, uint32_t capacity, uint32_t* count);
 
-/** Figures of the last octocap_session_solve_images() detection. */
+/** Figures of the last octocap_session_solve_images() detection (`out->struct_size` set by the caller). */
 OCTOCAP_API octocap_result_t octocap_session_detect_info(const octocap_session_t* session, octocap_detect_info_t* out);
 
 /** The 3D method in use (AUTO resolved at creation). */
@@ -505,80 +679,6 @@ OCTOCAP_API octocap_result_t octocap_session_flush_stream(octocap_session_t* ses
 /** Resets temporal state (filter, person tracking), e.g. between takes. */
 OCTOCAP_API octocap_result_t octocap_session_reset(octocap_session_t* session);
 
-/** A solved 3D point (a layout keypoint or a skeleton joint). */
-typedef struct octocap_joint_t {
-  float position[3];           /**< World frame of the calibration, metres. Zero when missing. */
-  float confidence;            /**< Mean 2D confidence of the supporting views; 0 when missing. */
-  float reprojection_error_px; /**< Mean distance (px) between the reprojection of the solved point (before the
-                                    temporal filter) and the supporting detections. */
-  uint32_t views_used;         /**< Number of views that supported the point. */
-  uint32_t valid;              /**< 1 when solved, 0 when missing (never a guess). */
-} octocap_joint_t;
-
-/** Frame-level summary of the last solve. */
-typedef struct octocap_frame_info_t {
-  int64_t frame_index;          /**< 0 for the first solved frame of the session. */
-  int64_t timestamp_us;
-  uint32_t keypoints_solved;    /**< Layout keypoints with valid = 1. */
-  uint32_t keypoints_total;
-  float mean_reprojection_error_px; /**< Mean over solved keypoints. */
-  uint32_t views_with_person;   /**< Views in which a person was selected. */
-  float solve_ms;               /**< Wall time of the 3D solve of this frame. */
-} octocap_frame_info_t;
-
-/** Summary of the last frame (::OCTOCAP_ERROR_NO_RESULT before the first solve). */
-OCTOCAP_API octocap_result_t octocap_session_get_frame_info(const octocap_session_t* session,
-                                                            octocap_frame_info_t* out);
-
-/** The 3D layout keypoints of the last frame (capacity >= layout keypoint count; NULL out to query count). */
-OCTOCAP_API octocap_result_t octocap_session_get_keypoints3d(const octocap_session_t* session, octocap_joint_t* out,
-                                                             uint32_t capacity, uint32_t* count);
-
-/** The ::OCTOCAP_JOINT_COUNT skeleton joints of the last frame (NULL out to query the count). */
-OCTOCAP_API octocap_result_t octocap_session_get_joints(const octocap_session_t* session, octocap_joint_t* out,
-                                                        uint32_t capacity, uint32_t* count);
-
-/** Index of the person selected in each view for the last frame (-1 = none). */
-OCTOCAP_API octocap_result_t octocap_session_get_selected_people(const octocap_session_t* session, int32_t* out,
-                                                                 uint32_t capacity, uint32_t* count);
-
-/** Coordinate frame for bone queries. */
-typedef int32_t octocap_coord_frame_t;
-/** Values of ::octocap_coord_frame_t. */
-enum octocap_coord_frame_values {
-  OCTOCAP_FRAME_RIG = 0,    /**< Right-handed, Y up, character faces +Z in the T-pose. */
-  OCTOCAP_FRAME_UNITY = 1,  /**< Left-handed, Y up, +Z forward (X mirrored). */
-  OCTOCAP_FRAME_GODOT = 2   /**< Right-handed, Y up, character faces -Z (turned 180 degrees about Y). */
-};
-
-/** Quaternion (x, y, z, w). */
-typedef struct octocap_quat_t {
-  float x, y, z, w;
-} octocap_quat_t;
-
-/** The pose of one bone in the last frame. */
-typedef struct octocap_bone_pose_t {
-  octocap_quat_t local_rotation;  /**< Rotation relative to the parent bone, from the T-pose (identity = T-pose). */
-  octocap_quat_t global_rotation; /**< Rotation in the chosen frame, from the T-pose. */
-  float head_position[3];         /**< Where the bone starts, chosen frame, metres. */
-  float length_m;                 /**< Measured length this frame. */
-  uint32_t valid;                 /**< 0 when a joint of the bone is missing; rotations are then identity. */
-} octocap_bone_pose_t;
-
-/** The ::OCTOCAP_BONE_COUNT bone poses of the last frame, converted to `frame` (NULL out to query the count). */
-OCTOCAP_API octocap_result_t octocap_session_get_bones(const octocap_session_t* session, octocap_coord_frame_t frame,
-                                                       octocap_bone_pose_t* out, uint32_t capacity, uint32_t* count);
-
-/** Local rotation of one bone (convenience over octocap_session_get_bones). */
-OCTOCAP_API octocap_result_t octocap_session_get_bone_rotation(const octocap_session_t* session, uint32_t bone,
-                                                               octocap_coord_frame_t frame, octocap_quat_t* out);
-
-/**
- * Counter that changes whenever the skeleton definition changes (layout, bone table). A consumer caches the
- * definition and re-reads it when this changes.
- */
-OCTOCAP_API octocap_result_t octocap_session_definition_counter(const octocap_session_t* session, uint32_t* out);
-
 /** @} */
 /* ------------------------------------------------------------------------------------------------------ */
 /** @name Streaming: receiving skeletons over Cyclone DDS
@@ -587,7 +687,7 @@ OCTOCAP_API octocap_result_t octocap_session_definition_counter(const octocap_se
  * definition: layout, keypoint and joint names, bones; reliable, transient-local, so a late joiner always has
  * it) and "<topic>_pose" (per frame). Publishing never blocks the solve: frames go to a queue that a
  * library thread writes; when it is full the oldest frame is dropped. A subscriber, in this process or on
- * another machine, reads the same queries as a local session. Cyclone is configured as usual through the
+ * another machine, hands out the same frames as a local session. Cyclone is configured as usual through the
  * CYCLONEDDS_URI environment variable (network interface, multicast, peers).
  */
 /** @{ */
@@ -618,34 +718,28 @@ typedef struct octocap_stream_info_t {
   uint32_t has_definition;       /**< 1 once the skeleton definition has arrived. */
 } octocap_stream_info_t;
 
-/** Fills `cfg` with defaults and sets its struct_size. */
-OCTOCAP_API void octocap_subscriber_config_init(octocap_subscriber_config_t* cfg);
+/** Fills the first `struct_size` bytes of `cfg` with defaults and sets its struct_size (STRUCT_SIZE for an unknown
+ *  size). Call it through octocap_subscriber_config_init(). */
+OCTOCAP_API octocap_result_t octocap_subscriber_config_defaults(octocap_subscriber_config_t* cfg, uint32_t struct_size);
+/** Fills `cfg` with this library's defaults; inline, so it never writes past the caller's struct. */
+static inline void octocap_subscriber_config_init(octocap_subscriber_config_t* cfg) {
+  (void)octocap_subscriber_config_defaults(cfg, (uint32_t)sizeof *cfg);
+}
 /** Joins a stream. */
 OCTOCAP_API octocap_result_t octocap_subscriber_create(const octocap_subscriber_config_t* cfg,
                                                        octocap_subscriber_t** out);
 /** Leaves the stream; NULL is accepted. */
 OCTOCAP_API void octocap_subscriber_destroy(octocap_subscriber_t* sub);
 /**
- * Takes the next pose in arrival order, waiting up to `timeout_ms` (0: do not wait), and makes it the current
- * frame for the queries below. ::OCTOCAP_ERROR_NO_RESULT when none arrived in time (the previous frame stays).
+ * Takes the next pose in arrival order, waiting up to `timeout_ms` (0: do not wait), as a new frame handle the
+ * caller releases. ::OCTOCAP_STATUS_TIMEOUT, with `*out` = NULL, when none arrived in time. The subscriber keeps
+ * one thread's state: take from one thread at a time.
  */
-OCTOCAP_API octocap_result_t octocap_subscriber_take(octocap_subscriber_t* sub, int32_t timeout_ms);
+OCTOCAP_API octocap_result_t octocap_subscriber_take_frame(octocap_subscriber_t* sub, int32_t timeout_ms,
+                                                           octocap_frame_t** out);
 /** Counters: frames received and lost, publisher restarts, rejected samples. */
 OCTOCAP_API octocap_result_t octocap_subscriber_get_stream_info(const octocap_subscriber_t* sub,
                                                                 octocap_stream_info_t* out);
-/** As octocap_session_get_frame_info(), for the current received frame (solve_ms is 0). */
-OCTOCAP_API octocap_result_t octocap_subscriber_get_frame_info(const octocap_subscriber_t* sub,
-                                                               octocap_frame_info_t* out);
-/** As octocap_session_get_keypoints3d(), for the current received frame. */
-OCTOCAP_API octocap_result_t octocap_subscriber_get_keypoints3d(const octocap_subscriber_t* sub, octocap_joint_t* out,
-                                                                uint32_t capacity, uint32_t* count);
-/** As octocap_session_get_joints(), for the current received frame. */
-OCTOCAP_API octocap_result_t octocap_subscriber_get_joints(const octocap_subscriber_t* sub, octocap_joint_t* out,
-                                                           uint32_t capacity, uint32_t* count);
-/** As octocap_session_get_bones(), for the current received frame. */
-OCTOCAP_API octocap_result_t octocap_subscriber_get_bones(const octocap_subscriber_t* sub, octocap_coord_frame_t frame,
-                                                          octocap_bone_pose_t* out, uint32_t capacity,
-                                                          uint32_t* count);
 
 /** @} */
 /* ------------------------------------------------------------------------------------------------------ */
@@ -725,8 +819,13 @@ typedef struct octocap_calibration_report_t {
   float final_rms_px;            /**< After. */
 } octocap_calibration_report_t;
 
-/** Fills `opt` with defaults and sets its struct_size. */
-OCTOCAP_API void octocap_extrinsics_options_init(octocap_extrinsics_options_t* opt);
+/** Fills the first `struct_size` bytes of `opt` with defaults and sets its struct_size (STRUCT_SIZE for an unknown
+ *  size). Call it through octocap_extrinsics_options_init(). */
+OCTOCAP_API octocap_result_t octocap_extrinsics_options_defaults(octocap_extrinsics_options_t* opt, uint32_t struct_size);
+/** Fills `opt` with this library's defaults; inline, so it never writes past the caller's struct. */
+static inline void octocap_extrinsics_options_init(octocap_extrinsics_options_t* opt) {
+  (void)octocap_extrinsics_options_defaults(opt, (uint32_t)sizeof *opt);
+}
 
 /**
  * Every camera's pose from a person moving through the volume: their 2D keypoints in `rec` (one folder per
@@ -769,7 +868,7 @@ enum octocap_motion_format_values {
   OCTOCAP_MOTION_TRC = 0, /**< OpenSim TRC, Y up (Z-up worlds are turned as Pose2Sim does), metres. */
   OCTOCAP_MOTION_CSV = 1, /**< `frame,NAME_x,NAME_y,NAME_z,...`, calibration world frame, empty cells when missing. */
   OCTOCAP_MOTION_BVH = 2  /**< The bone animation: one joint per bone (Mixamo-style names), median bone lengths,
-                               rig frame (Y up), centimetres. Frames come from octocap_motion_writer_add_frame(). */
+                               rig frame (Y up), centimetres. Frames come from octocap_motion_writer_add(). */
 };
 
 /**
@@ -779,16 +878,19 @@ enum octocap_motion_format_values {
 OCTOCAP_API octocap_result_t octocap_motion_writer_create(const char* path, octocap_motion_format_t format,
                                                           octocap_layout_t layout, octocap_up_axis_t up_axis,
                                                           double rate_hz, octocap_motion_writer_t** out);
-/** Appends the last frame's layout keypoints of `session`. */
-OCTOCAP_API octocap_result_t octocap_motion_writer_add_frame(octocap_motion_writer_t* writer,
-                                                             const octocap_session_t* session);
-/** Appends `count` 3D keypoints (layout order, e.g. from octocap_subscriber_get_keypoints3d()). */
+/** Appends the layout keypoints (and for BVH the bones) of person `person` of `frame`; a frame with no such person
+ *  adds an empty frame. Errors: INVALID_ARGUMENT when the frame's layout is not the writer's. */
+OCTOCAP_API octocap_result_t octocap_motion_writer_add(octocap_motion_writer_t* writer, const octocap_frame_t* frame,
+                                                       uint32_t person);
+/** Appends `count` 3D keypoints (layout order, e.g. from octocap_frame_get_keypoints3d()). */
 OCTOCAP_API octocap_result_t octocap_motion_writer_add_keypoints(octocap_motion_writer_t* writer,
                                                                  const octocap_joint_t* keypoints, uint32_t count);
 /** Appends an empty frame (nothing solved). */
 OCTOCAP_API octocap_result_t octocap_motion_writer_add_empty_frame(octocap_motion_writer_t* writer);
 /** Writes the file and destroys the writer (also on failure). NULL is accepted. */
 OCTOCAP_API octocap_result_t octocap_motion_writer_close(octocap_motion_writer_t* writer);
+/** Destroys the writer without writing anything (a take that failed leaves no partial file). NULL is accepted. */
+OCTOCAP_API void octocap_motion_writer_discard(octocap_motion_writer_t* writer);
 
 /** A motion file opened for playback as the paper's skeleton: what drives an avatar from a file. */
 typedef struct octocap_motion_t octocap_motion_t;
@@ -804,6 +906,82 @@ OCTOCAP_API octocap_result_t octocap_motion_open(const char* path, octocap_motio
 OCTOCAP_API void octocap_motion_destroy(octocap_motion_t* motion);
 /** Frame count and frame rate (Hz) of the motion. */
 OCTOCAP_API octocap_result_t octocap_motion_info(const octocap_motion_t* motion, uint32_t* frame_count, double* rate_hz);
+/** Frame `index` as a frame handle (one person, id 1, when the file has joints there; joints in the rig frame; bone
+ *  poses solved once at open, exactly as a session solves them). Errors: INVALID_ARGUMENT for an index out of range. */
+OCTOCAP_API octocap_result_t octocap_motion_get_frame(const octocap_motion_t* motion, uint32_t index,
+                                                      octocap_frame_t** out);
+
+/** @} */
+/* ------------------------------------------------------------------------------------------------------ */
+/**
+ * @name Deprecated: the per-source queries of 0.x
+ *
+ * Kept so that programs built against 0.x keep working; new code reads frames (octocap_frame_*). Each reads the
+ * source's current frame (person 0) as the frame queries do; a frame with nobody in it gives invalid joints.
+ */
+/** @{ */
+
+/** Frame-level summary of the last solve. */
+typedef struct octocap_frame_info_t {
+  int64_t frame_index;          /**< 0 for the first solved frame of the session. */
+  int64_t timestamp_us;
+  uint32_t keypoints_solved;    /**< Layout keypoints with valid = 1. */
+  uint32_t keypoints_total;
+  float mean_reprojection_error_px; /**< Mean over solved keypoints. */
+  uint32_t views_with_person;   /**< Views in which a person was selected. */
+  float solve_ms;               /**< Wall time of the 3D solve of this frame. */
+} octocap_frame_info_t;
+
+/** Summary of the last frame (::OCTOCAP_ERROR_NO_RESULT before the first solve). */
+OCTOCAP_API octocap_result_t octocap_session_get_frame_info(const octocap_session_t* session,
+                                                            octocap_frame_info_t* out);
+
+/** The 3D layout keypoints of the last frame (capacity >= layout keypoint count; NULL out to query count). */
+OCTOCAP_API octocap_result_t octocap_session_get_keypoints3d(const octocap_session_t* session, octocap_joint_t* out,
+                                                             uint32_t capacity, uint32_t* count);
+
+/** The ::OCTOCAP_JOINT_COUNT skeleton joints of the last frame (NULL out to query the count). */
+OCTOCAP_API octocap_result_t octocap_session_get_joints(const octocap_session_t* session, octocap_joint_t* out,
+                                                        uint32_t capacity, uint32_t* count);
+
+/** Index of the person selected in each view for the last frame (-1 = none). */
+OCTOCAP_API octocap_result_t octocap_session_get_selected_people(const octocap_session_t* session, int32_t* out,
+                                                                 uint32_t capacity, uint32_t* count);
+
+/** The ::OCTOCAP_BONE_COUNT bone poses of the last frame, converted to `frame` (NULL out to query the count). */
+OCTOCAP_API octocap_result_t octocap_session_get_bones(const octocap_session_t* session, octocap_coord_frame_t frame,
+                                                       octocap_bone_pose_t* out, uint32_t capacity, uint32_t* count);
+
+/** Local rotation of one bone (convenience over octocap_session_get_bones). */
+OCTOCAP_API octocap_result_t octocap_session_get_bone_rotation(const octocap_session_t* session, uint32_t bone,
+                                                               octocap_coord_frame_t frame, octocap_quat_t* out);
+
+/**
+ * Counter that changes whenever the skeleton definition changes (layout, bone table). A consumer caches the
+ * definition and re-reads it when this changes.
+ */
+OCTOCAP_API octocap_result_t octocap_session_definition_counter(const octocap_session_t* session, uint32_t* out);
+
+/** Takes the next pose as the subscriber's current frame; ::OCTOCAP_ERROR_NO_RESULT when none arrived in time (as in
+ *  0.x). Use octocap_subscriber_take_frame(). */
+OCTOCAP_API octocap_result_t octocap_subscriber_take(octocap_subscriber_t* sub, int32_t timeout_ms);
+/** As octocap_session_get_frame_info(), for the current received frame (solve_ms is 0). */
+OCTOCAP_API octocap_result_t octocap_subscriber_get_frame_info(const octocap_subscriber_t* sub,
+                                                               octocap_frame_info_t* out);
+/** As octocap_session_get_keypoints3d(), for the current received frame. */
+OCTOCAP_API octocap_result_t octocap_subscriber_get_keypoints3d(const octocap_subscriber_t* sub, octocap_joint_t* out,
+                                                                uint32_t capacity, uint32_t* count);
+/** As octocap_session_get_joints(), for the current received frame. */
+OCTOCAP_API octocap_result_t octocap_subscriber_get_joints(const octocap_subscriber_t* sub, octocap_joint_t* out,
+                                                           uint32_t capacity, uint32_t* count);
+/** As octocap_session_get_bones(), for the current received frame. */
+OCTOCAP_API octocap_result_t octocap_subscriber_get_bones(const octocap_subscriber_t* sub, octocap_coord_frame_t frame,
+                                                          octocap_bone_pose_t* out, uint32_t capacity,
+                                                          uint32_t* count);
+
+/** Appends the last frame's layout keypoints of `session`. Use octocap_motion_writer_add(). */
+OCTOCAP_API octocap_result_t octocap_motion_writer_add_frame(octocap_motion_writer_t* writer,
+                                                             const octocap_session_t* session);
 /** The 15 skeleton joints of `frame` (::octocap_joint_id_values order), rig frame (Y up, metres); valid = 0 where
  *  the file has none. */
 OCTOCAP_API octocap_result_t octocap_motion_joints(const octocap_motion_t* motion, uint32_t frame,

@@ -12,7 +12,7 @@
 #include "calib/bundle_adjustment.h"
 #include "core/error.h"
 #include "core/log.h"
-#include "solve/triangulation.h"
+#include "core/rays.h"
 
 namespace octocap {
 namespace {

@@ -27,11 +27,15 @@ extern "C" {
 
 const char* octocap_version(void) { return OCTOCAP_VERSION_STRING; }
 uint32_t octocap_abi_version(void) { return OCTOCAP_ABI_VERSION; }
+uint32_t octocap_version_number(void) { return OCTOCAP_VERSION_NUMBER; }
 const char* octocap_last_error(void) { return capi::t_last_error.c_str(); }
 
 const char* octocap_result_name(octocap_result_t r) {
   switch (r) {
     case OCTOCAP_OK: return "OCTOCAP_OK";
+    case OCTOCAP_STATUS_NO_PERSON: return "OCTOCAP_STATUS_NO_PERSON";
+    case OCTOCAP_STATUS_TIMEOUT: return "OCTOCAP_STATUS_TIMEOUT";
+    case OCTOCAP_ERROR_OUT_OF_MEMORY: return "OCTOCAP_ERROR_OUT_OF_MEMORY";
     case OCTOCAP_ERROR_INVALID_ARGUMENT: return "OCTOCAP_ERROR_INVALID_ARGUMENT";
     case OCTOCAP_ERROR_INVALID_HANDLE: return "OCTOCAP_ERROR_INVALID_HANDLE";
     case OCTOCAP_ERROR_STRUCT_SIZE: return "OCTOCAP_ERROR_STRUCT_SIZE";

@@ -69,7 +69,7 @@ octocap_result_t guard(F&& fn) noexcept {
     return static_cast<octocap_result_t>(e.code());
   } catch (const std::bad_alloc&) {
     set_last_error("out of memory");
-    return OCTOCAP_ERROR_INTERNAL;
+    return OCTOCAP_ERROR_OUT_OF_MEMORY;
   } catch (const std::exception& e) {
     set_last_error(std::string("internal error: ") + e.what());
     return OCTOCAP_ERROR_INTERNAL;
@@ -80,5 +80,10 @@ octocap_result_t guard(F&& fn) noexcept {
 }
 
 void copy_name(char* dst, size_t capacity, const std::string& src);
+
+// A call that worked but produced nothing returns a positive status, not OK and not an error.
+inline octocap_result_t status_unless(octocap_result_t r, bool produced, octocap_result_t status) {
+  return r == OCTOCAP_OK && !produced ? status : r;
+}
 
 }  // namespace octocap::capi

@@ -6,6 +6,7 @@
 #include "calib/extrinsics.h"
 #include "calib/intrinsics.h"
 #include "capi/boundary.h"
+#include "capi/struct_versions.h"
 #include "capi/camera_c.h"
 #include "capi/handles.h"
 
@@ -29,15 +30,18 @@ octocap_result_t octocap_calibration_solve_intrinsics(const char* images_dir, co
   });
 }
 
-void octocap_extrinsics_options_init(octocap_extrinsics_options_t* o) {
-  if (!o) return;
-  *o = octocap_extrinsics_options_t{};
-  o->struct_size = sizeof *o;
-  o->distance_camera_a = -1;
-  o->distance_camera_b = -1;
-  o->min_confidence = 0.4f;
-  o->max_frames = 1500;
-  o->up_axis = OCTOCAP_UP_Y;
+octocap_result_t octocap_extrinsics_options_defaults(octocap_extrinsics_options_t* o, uint32_t struct_size) {
+  return capi::guard([&] {
+    capi::require(o, "opt");
+    capi::check_size(struct_size, capi::kExtrinsicsOptionsSizes, "octocap_extrinsics_options_t");
+    octocap_extrinsics_options_t d{};
+    d.distance_camera_a = -1;
+    d.distance_camera_b = -1;
+    d.min_confidence = 0.4f;
+    d.max_frames = 1500;
+    d.up_axis = OCTOCAP_UP_Y;
+    capi::write_defaults(o, struct_size, d);
+  });
 }
 
 namespace {
@@ -56,16 +60,21 @@ void to_c_report(const ExtrinsicsReport& rep, octocap_calibration_report_t* repo
   report->final_rms_px = static_cast<float>(rep.final_rms_px);
 }
 
-void check_options(const octocap_extrinsics_options_t* opt, const octocap_calibration_t* intrinsics) {
-  capi::require(opt, "opt");
-  if (opt->struct_size != sizeof(octocap_extrinsics_options_t))
-    throw Error(Errc::struct_size, "octocap_extrinsics_options_t.struct_size is " + std::to_string(opt->struct_size) +
-                                       ", expected " + std::to_string(sizeof(octocap_extrinsics_options_t)));
+// The caller's options (of any released size) as today's struct, checked.
+octocap_extrinsics_options_t check_options(const octocap_extrinsics_options_t* given,
+                                           const octocap_calibration_t* intrinsics) {
+  capi::require(given, "opt");
+  capi::check_size(given->struct_size, capi::kExtrinsicsOptionsSizes, "octocap_extrinsics_options_t");
+  octocap_extrinsics_options_t defaults;
+  octocap_extrinsics_options_init(&defaults);
+  const octocap_extrinsics_options_t options = capi::widen(*given, defaults);
+  const octocap_extrinsics_options_t* opt = &options;
   for (float v : {opt->person_height_m, opt->camera_distance_m, opt->min_confidence})
     capi::require_finite(v, "an extrinsics option");
   if (opt->up_axis != OCTOCAP_UP_Y && opt->up_axis != OCTOCAP_UP_Z && opt->up_axis != OCTOCAP_UP_AUTO)
     throw Error(Errc::invalid_argument, "up_axis must be Y or Z");
   if (intrinsics->cameras.size() > 64) throw Error(Errc::invalid_argument, "at most 64 cameras");
+  return options;
 }
 
 }  // namespace
@@ -81,7 +90,8 @@ octocap_result_t octocap_calibration_solve_extrinsics_boards(const octocap_calib
     capi::checked(intrinsics, "calibration");
     capi::require(images_dir, "images_dir");
     capi::require(board, "board");
-    check_options(opt, intrinsics);
+    const octocap_extrinsics_options_t checked_options = check_options(opt, intrinsics);
+    opt = &checked_options;
     const BoardSpec spec = parse_board(board);
     const BoardViews views = detect_board_views(images_dir, intrinsics->cameras.size(), spec);
     ExtrinsicsReport rep;
@@ -100,7 +110,8 @@ octocap_result_t octocap_calibration_solve_extrinsics(const octocap_calibration_
     *out = nullptr;
     capi::checked(intrinsics, "calibration");
     capi::checked(rec, "recording");
-    check_options(opt, intrinsics);
+    const octocap_extrinsics_options_t checked_options = check_options(opt, intrinsics);
+    opt = &checked_options;
     const auto& r = *rec->recording;
     if (r.view_count() != intrinsics->cameras.size())
       throw Error(Errc::camera_mismatch, "the recording has " + std::to_string(r.view_count()) +

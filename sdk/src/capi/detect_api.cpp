@@ -5,17 +5,18 @@
 #include "capi/detect_c.h"
 #include "capi/frame_queries.h"
 #include "capi/handles.h"
+#include "capi/struct_versions.h"
 #include "detect/ort_model.h"
 
 using namespace octocap;
 
 namespace octocap::capi {
 
-DetectorConfig detector_config(const octocap_detector_config_t& c) {
-  if (c.struct_size != sizeof(octocap_detector_config_t))
-    throw Error(Errc::struct_size, "octocap_detector_config_t.struct_size is " + std::to_string(c.struct_size) +
-                                       ", expected " + std::to_string(sizeof(octocap_detector_config_t)) +
-                                       " (call octocap_detector_config_init first)");
+DetectorConfig detector_config(const octocap_detector_config_t& given) {
+  check_size(given.struct_size, kDetectorConfigSizes, "octocap_detector_config_t");
+  octocap_detector_config_t defaults;
+  octocap_detector_config_init(&defaults);
+  const octocap_detector_config_t c = widen(given, defaults);
   DetectorConfig d;
   const size_t len = strnlen(c.model, sizeof c.model);
   if (len == sizeof c.model) throw Error(Errc::invalid_argument, "detector model path is not NUL-terminated");
@@ -89,17 +90,20 @@ const std::vector<DetectedPerson>& view_people(const std::vector<std::vector<Det
 
 extern "C" {
 
-void octocap_detector_config_init(octocap_detector_config_t* c) {
-  if (!c) return;
-  *c = octocap_detector_config_t{};
-  c->struct_size = sizeof(octocap_detector_config_t);
-  c->mode = OCTOCAP_DETECT_CROP;  // the most accurate path at per-view cost (README "Detecting")
-  c->person_pick = OCTOCAP_PICK_ALL;
-  c->threads = 0;
-  c->mosaic_tile_px = 256;
-  c->max_people = 4;
-  c->min_confidence = 0.3f;
-  c->parallel_views = 0;  // one view per core: every session has 2+ cameras (README "From images")
+octocap_result_t octocap_detector_config_defaults(octocap_detector_config_t* c, uint32_t struct_size) {
+  return capi::guard([&] {
+    capi::require(c, "cfg");
+    capi::check_size(struct_size, capi::kDetectorConfigSizes, "octocap_detector_config_t");
+    octocap_detector_config_t d{};
+    d.mode = OCTOCAP_DETECT_CROP;  // the most accurate path at per-view cost (README "Detecting")
+    d.person_pick = OCTOCAP_PICK_ALL;
+    d.threads = 0;
+    d.mosaic_tile_px = 256;
+    d.max_people = 4;
+    d.min_confidence = 0.3f;
+    d.parallel_views = 0;  // one view per core: every session has 2+ cameras (README "From images")
+    capi::write_defaults(c, struct_size, d);
+  });
 }
 
 octocap_result_t octocap_detector_create(const octocap_detector_config_t* cfg, octocap_detector_t** out) {
@@ -162,9 +166,19 @@ const char* octocap_onnxruntime_version(void) {
 
 octocap_result_t octocap_session_solve_images(octocap_session_t* s, const octocap_image_t* images,
                                               uint32_t view_count, int64_t timestamp_us) {
+  bool solved = false;
+  const octocap_result_t r = capi::guard([&] {
+    capi::checked(s, "session");
+    solved = s->session->solve_images(capi::image_views(images, view_count), timestamp_us);
+  });
+  return capi::status_unless(r, solved, OCTOCAP_STATUS_NO_PERSON);
+}
+
+octocap_result_t octocap_session_set_detector(octocap_session_t* s, const octocap_detector_config_t* cfg) {
   return capi::guard([&] {
     capi::checked(s, "session");
-    s->session->solve_images(capi::image_views(images, view_count), timestamp_us);
+    capi::require(cfg, "cfg");
+    s->session->set_detector(capi::detector_config(*cfg));
   });
 }
 

@@ -4,7 +4,6 @@
 
 #include "capi/boundary.h"
 #include "capi/handles.h"
-#include "rig/bvh_export.h"
 
 using namespace octocap;
 
@@ -104,73 +103,52 @@ octocap_result_t octocap_motion_writer_create(const char* path, octocap_motion_f
       throw Error(Errc::invalid_argument, "unknown motion format");
     if (octocap_layout_keypoint_count(layout_id) == 0)
       throw Error(Errc::invalid_argument, "layout must be a concrete layout (not AUTO)");
-    if (!(rate_hz > 0) || !std::isfinite(rate_hz)) throw Error(Errc::invalid_argument, "rate_hz must be > 0");
-    MotionTrack track;
-    for (const char* n : layout(static_cast<LayoutId>(layout_id)).keypoints) track.markers.emplace_back(n);
-    track.rate_hz = rate_hz;
-    *out = capi::make_handle<octocap_motion_writer_t>(std::string(path), format, up_axis == OCTOCAP_UP_Z,
-                                                      std::move(track), std::vector<SkeletonPose>{});
+    auto writer = std::make_unique<MotionWriter>(path, static_cast<MotionFormat>(format),
+                                                 static_cast<LayoutId>(layout_id), up_axis == OCTOCAP_UP_Z, rate_hz);
+    *out = capi::make_handle<octocap_motion_writer_t>(std::move(writer));
+  });
+}
+
+octocap_result_t octocap_motion_writer_add(octocap_motion_writer_t* w, const octocap_frame_t* frame, uint32_t person) {
+  return capi::guard([&] {
+    MotionWriter& writer = *capi::checked(w, "motion writer")->writer;
+    writer.add(*capi::checked(frame, "frame")->frame, person);
   });
 }
 
 octocap_result_t octocap_motion_writer_add_frame(octocap_motion_writer_t* w, const octocap_session_t* s) {
   return capi::guard([&] {
-    capi::checked(w, "motion writer");
-    capi::checked(s, "session");
-    const Session& session = *s->session;
+    MotionWriter& writer = *capi::checked(w, "motion writer")->writer;
+    const Session& session = *capi::checked(s, "session")->session;
     if (!session.has_result()) throw Error(Errc::no_result, "the session has not solved a frame yet");
-    if (session.keypoints().size() != w->track.markers.size())
-      throw Error(Errc::invalid_argument, "the session's layout differs from the writer's");
-    MarkerFrame f;
-    for (const auto& k : session.keypoints())
-      f.push_back(k.valid ? k.position : Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));
-    w->track.frames.push_back(std::move(f));
-    w->poses.push_back(session.bones());
+    writer.add(session.result(), 0);
   });
 }
 
 octocap_result_t octocap_motion_writer_add_keypoints(octocap_motion_writer_t* w, const octocap_joint_t* keypoints,
                                                      uint32_t count) {
   return capi::guard([&] {
-    capi::checked(w, "motion writer");
+    MotionWriter& writer = *capi::checked(w, "motion writer")->writer;
     capi::require(keypoints, "keypoints");
-    if (w->format == OCTOCAP_MOTION_BVH)
-      throw Error(Errc::unsupported, "a BVH holds bone rotations: add frames from a session (octocap_motion_writer_add_frame)");
-    if (count != w->track.markers.size())
-      throw Error(Errc::invalid_argument, "got " + std::to_string(count) + " keypoints, the writer's layout has " +
-                                              std::to_string(w->track.markers.size()));
-    MarkerFrame f;
-    for (uint32_t k = 0; k < count; ++k) {
-      const octocap_joint_t& j = keypoints[k];
-      const Eigen::Vector3d p(j.position[0], j.position[1], j.position[2]);
-      f.push_back(j.valid && p.allFinite() ? p : Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));
-    }
-    w->track.frames.push_back(std::move(f));
+    std::vector<Eigen::Vector3d> points(count, Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));
+    for (uint32_t k = 0; k < count; ++k)
+      if (keypoints[k].valid)
+        points[k] = Eigen::Vector3d(keypoints[k].position[0], keypoints[k].position[1], keypoints[k].position[2]);
+    writer.add_keypoints(points);
   });
 }
 
 octocap_result_t octocap_motion_writer_add_empty_frame(octocap_motion_writer_t* w) {
-  return capi::guard([&] {
-    capi::checked(w, "motion writer");
-    w->track.frames.emplace_back(w->track.markers.size(),
-                                 Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));
-    w->poses.emplace_back();  // all bones invalid: the BVH keeps the previous pose
-  });
+  return capi::guard([&] { capi::checked(w, "motion writer")->writer->add_empty(); });
 }
 
 octocap_result_t octocap_motion_writer_close(octocap_motion_writer_t* w) {
   if (!w) return OCTOCAP_OK;
-  const octocap_result_t r = capi::guard([&] {
-    capi::checked(w, "motion writer");
-    if (w->format == OCTOCAP_MOTION_TRC)
-      write_trc(w->path, w->track, w->z_up);
-    else if (w->format == OCTOCAP_MOTION_BVH)
-      write_bvh(w->path, w->poses, w->track.rate_hz);
-    else
-      write_csv(w->path, w->track);
-  });
+  const octocap_result_t r = capi::guard([&] { capi::checked(w, "motion writer")->writer->close(); });
   if (r != OCTOCAP_ERROR_INVALID_HANDLE) capi::destroy_handle(w);
   return r;
 }
+
+void octocap_motion_writer_discard(octocap_motion_writer_t* w) { capi::destroy_handle(w); }
 
 }  // extern "C"

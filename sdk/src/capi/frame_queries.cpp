@@ -18,6 +18,13 @@ octocap_quat_t quat_c(const Eigen::Quaterniond& q) {
 
 }  // namespace
 
+void check_person(const FrameResult& f, uint32_t person, bool allow_empty) {
+  const size_t n = f.person_count();
+  if (person < n || (allow_empty && person == 0)) return;
+  throw Error(Errc::invalid_argument, "person " + std::to_string(person) + " out of range (the frame holds " +
+                                          std::to_string(n) + (n == 1 ? " person)" : " people)"));
+}
+
 void to_c_joint(const PointResult& r, octocap_joint_t& out) {
   out = octocap_joint_t{};
   if (!r.valid) return;
@@ -26,6 +33,36 @@ void to_c_joint(const PointResult& r, octocap_joint_t& out) {
   out.reprojection_error_px = static_cast<float>(r.reprojection_error_px);
   out.views_used = r.views_used;
   out.valid = 1;
+}
+
+void query_summary(const FrameResult& f, octocap_frame_summary_t* out) {
+  fill_sized(out, sizeof(octocap_frame_summary_t), "octocap_frame_summary_t", [&](octocap_frame_summary_t& s) {
+    s.person_count = static_cast<uint32_t>(f.person_count());
+    s.frame_index = f.info.frame_index;
+    s.timestamp_us = f.info.timestamp_us;
+    s.layout = static_cast<octocap_layout_t>(f.layout);
+    s.keypoint_count = static_cast<uint32_t>(f.keypoints.size());
+    s.definition_counter = f.definition_counter;
+    s.source_id = f.source_id;
+    s.view_count = f.view_count;
+    s.joints_in_rig_frame = f.rig_frame_joints ? 1 : 0;
+    s.solve_ms = static_cast<float>(f.info.solve_ms);
+  });
+}
+
+void query_person(const FrameResult& f, uint32_t person, octocap_person_t* out) {
+  check_person(f, person);
+  fill_sized(out, sizeof(octocap_person_t), "octocap_person_t", [&](octocap_person_t& p) {
+    p.id = 1;  // one tracked person per source today; ids are per source and never 0
+    p.keypoints_solved = f.info.keypoints_solved;
+    p.keypoints_total = static_cast<uint32_t>(f.keypoints.size());
+    for (const PointResult& j : f.joints) p.joints_solved += j.valid ? 1 : 0;
+    p.views_with_person = f.info.views_with_person;
+    p.mean_reprojection_error_px = static_cast<float>(f.info.mean_reprojection_error_px);
+    double conf = 0;
+    for (const PointResult& k : f.keypoints) conf += k.valid ? k.confidence : 0;
+    p.confidence = p.keypoints_solved ? static_cast<float>(conf / p.keypoints_solved) : 0.f;
+  });
 }
 
 void query_frame_info(const FrameResult& f, octocap_frame_info_t* out) {
@@ -67,6 +104,12 @@ void query_bones(const FrameResult& f, octocap_coord_frame_t frame, octocap_bone
       o.length_m = static_cast<float>(p.length);
       o.valid = p.valid ? 1 : 0;
     }
+  });
+}
+
+void query_person_views(const FrameResult& f, int32_t* out, uint32_t capacity, uint32_t* count) {
+  fill_array(static_cast<uint32_t>(f.selected.size()), out, capacity, count, [&] {
+    for (size_t v = 0; v < f.selected.size(); ++v) out[v] = f.selected[v];
   });
 }
 

@@ -1,14 +1,21 @@
-// What the opaque C handles hold.
+// What the opaque C handles hold: every handle struct is defined here, once.
 #pragma once
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "capi/boundary.h"
 #include "core/camera.h"
-#include "io/motion_files.h"
+#include "core/frame.h"
+#include "detect/detector.h"
 #include "io/openpose_json.h"
 #include "octocap/octocap.h"
 #include "pipeline/session.h"
-#include "detect/detector.h"
+#include "rig/motion_source.h"
+#include "rig/motion_writer.h"
+#ifdef OCTOCAP_HAVE_DDS
+#include "stream/dds_subscriber.h"
+#endif
 
 struct octocap_calibration_t {
   octocap::Calibration cameras;
@@ -16,7 +23,12 @@ struct octocap_calibration_t {
 
 struct octocap_session_t {
   std::unique_ptr<octocap::Session> session;
-  uint32_t definition_counter = 1;
+};
+
+// A frame is an immutable snapshot shared by every handle made from it (a session's frame is copied once per
+// octocap_session_get_frame, never while a caller reads it).
+struct octocap_frame_t {
+  std::shared_ptr<const octocap::FrameResult> frame;
 };
 
 struct octocap_detector_t {
@@ -30,11 +42,19 @@ struct octocap_recording_t {
 };
 
 struct octocap_motion_writer_t {
-  std::string path;
-  octocap_motion_format_t format = OCTOCAP_MOTION_TRC;
-  bool z_up = false;
-  octocap::MotionTrack track;
-  std::vector<octocap::SkeletonPose> poses;  // BVH
+  std::unique_ptr<octocap::MotionWriter> writer;
+};
+
+struct octocap_motion_t {
+  octocap::SkeletonMotion motion;
+  std::vector<octocap::SkeletonPose> bones;  // solved once at open, per frame
+  uint32_t definition_counter = 0;
+};
+
+struct octocap_subscriber_t {
+#ifdef OCTOCAP_HAVE_DDS
+  std::unique_ptr<octocap::DdsSubscriber> subscriber;
+#endif
 };
 
 namespace octocap::capi {
@@ -51,5 +71,8 @@ template <class H>
 void destroy_handle(H* h) {
   if (h && Registry<H>::instance().remove(h)) delete h;
 }
+
+// A new frame handle over a snapshot.
+octocap_frame_t* make_frame(std::shared_ptr<const FrameResult> frame);
 
 }  // namespace octocap::capi

@@ -1,31 +1,29 @@
-// Motion files for playback: joints and bone poses per frame, from TRC / CSV / BVH.
+// Motion files for playback: frames of joints and bone poses, from TRC / CSV / BVH.
 #include "capi/boundary.h"
 #include "capi/frame_queries.h"
 #include "capi/handles.h"
-#include "rig/motion_source.h"
+#include "rig/bone_solver.h"
 
 using namespace octocap;
 
-struct octocap_motion_t {
-  SkeletonMotion motion;
-};
-
 namespace {
 
-// The frame as a FrameResult, so the session's own query code converts it (joints in the rig frame here).
-FrameResult frame_of(const octocap_motion_t* m, uint32_t frame) {
+FrameResult frame_at(const octocap_motion_t* m, uint32_t frame) {
   capi::checked(m, "motion");
   if (frame >= m->motion.frames.size())
     throw Error(Errc::invalid_argument, "frame " + std::to_string(frame) + " out of range (" +
                                             std::to_string(m->motion.frames.size()) + " frames)");
   const SkeletonJoints& j = m->motion.frames[frame];
   FrameResult f;
+  f.keypoints.clear();
   f.info.frame_index = frame;
+  f.rig_frame_joints = true;
+  f.definition_counter = m->definition_counter;
   for (int k = 0; k < kJointCount; ++k) {
     f.joints[k].valid = j[k].allFinite();
     if (f.joints[k].valid) f.joints[k].position = j[k];
   }
-  f.bones = solve_bones(j);
+  f.bones = m->bones[frame];
   return f;
 }
 
@@ -39,7 +37,10 @@ octocap_result_t octocap_motion_open(const char* path, octocap_motion_t** out) {
     *out = nullptr;
     capi::require(path, "path");
     auto motion = load_skeleton_motion(path);
-    *out = capi::make_handle<octocap_motion_t>(std::move(motion));
+    std::vector<SkeletonPose> bones;
+    bones.reserve(motion.frames.size());
+    for (const SkeletonJoints& j : motion.frames) bones.push_back(solve_bones(j));
+    *out = capi::make_handle<octocap_motion_t>(std::move(motion), std::move(bones), next_definition_counter());
   });
 }
 
@@ -53,14 +54,24 @@ octocap_result_t octocap_motion_info(const octocap_motion_t* m, uint32_t* frame_
   });
 }
 
+octocap_result_t octocap_motion_get_frame(const octocap_motion_t* m, uint32_t index, octocap_frame_t** out) {
+  return capi::guard([&] {
+    capi::require(out, "out");
+    *out = nullptr;
+    *out = capi::make_frame(std::make_shared<const FrameResult>(frame_at(m, index)));
+  });
+}
+
+// Deprecated 0.x queries.
+
 octocap_result_t octocap_motion_joints(const octocap_motion_t* m, uint32_t frame, octocap_joint_t* out,
                                        uint32_t capacity, uint32_t* count) {
-  return capi::guard([&] { capi::query_joints(frame_of(m, frame), out, capacity, count); });
+  return capi::guard([&] { capi::query_joints(frame_at(m, frame), out, capacity, count); });
 }
 
 octocap_result_t octocap_motion_bones(const octocap_motion_t* m, uint32_t frame, octocap_coord_frame_t coord_frame,
                                       octocap_bone_pose_t* out, uint32_t capacity, uint32_t* count) {
-  return capi::guard([&] { capi::query_bones(frame_of(m, frame), coord_frame, out, capacity, count); });
+  return capi::guard([&] { capi::query_bones(frame_at(m, frame), coord_frame, out, capacity, count); });
 }
 
 }  // extern "C"

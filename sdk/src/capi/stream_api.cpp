@@ -6,13 +6,9 @@
 #include "capi/frame_queries.h"
 #include "capi/handles.h"
 #include "capi/stream_c.h"
-#include "stream/dds_subscriber.h"
+#include "capi/struct_versions.h"
 
 using namespace octocap;
-
-struct octocap_subscriber_t {
-  std::unique_ptr<DdsSubscriber> subscriber;
-};
 
 namespace octocap::capi {
 
@@ -42,23 +38,42 @@ StreamConfig stream_config(uint32_t domain_id, int32_t qos, uint32_t history_dep
 
 namespace {
 
-const FrameResult& current(const octocap_subscriber_t* s) {
+#ifdef OCTOCAP_HAVE_DDS
+DdsSubscriber& subscriber_of(const octocap_subscriber_t* s) { return *capi::checked(s, "subscriber")->subscriber; }
+#else
+[[noreturn]] void no_dds() {
+  throw Error(Errc::unsupported, "this build of octocap has no DDS streaming (OCTOCAP_WITH_DDS=OFF)");
+}
+struct NoSubscriber {
+  [[noreturn]] const FrameResult& frame() const { no_dds(); }
+};
+NoSubscriber subscriber_of(const octocap_subscriber_t* s) {
   capi::checked(s, "subscriber");
-  if (s->subscriber->stats().frames_received == 0) throw Error(Errc::no_result, "no pose has been received yet");
-  return s->subscriber->frame();
+  no_dds();
+}
+#endif
+
+const FrameResult& current(const octocap_subscriber_t* s) {
+#ifdef OCTOCAP_HAVE_DDS
+  if (subscriber_of(s).stats().frames_received == 0) throw Error(Errc::no_result, "no pose has been received yet");
+#endif
+  return subscriber_of(s).frame();
 }
 
 }  // namespace
 
 extern "C" {
 
-void octocap_subscriber_config_init(octocap_subscriber_config_t* c) {
-  if (!c) return;
-  *c = octocap_subscriber_config_t{};
-  c->struct_size = sizeof *c;
-  c->qos = OCTOCAP_QOS_LIVE;
-  c->history_depth = 256;
-  capi::copy_name(c->topic, sizeof c->topic, "octocap");
+octocap_result_t octocap_subscriber_config_defaults(octocap_subscriber_config_t* c, uint32_t struct_size) {
+  return capi::guard([&] {
+    capi::require(c, "cfg");
+    capi::check_size(struct_size, capi::kSubscriberConfigSizes, "octocap_subscriber_config_t");
+    octocap_subscriber_config_t d{};
+    d.qos = OCTOCAP_QOS_LIVE;
+    d.history_depth = 256;
+    capi::copy_name(d.topic, sizeof d.topic, "octocap");
+    capi::write_defaults(c, struct_size, d);
+  });
 }
 
 octocap_result_t octocap_subscriber_create(const octocap_subscriber_config_t* cfg, octocap_subscriber_t** out) {
@@ -66,9 +81,7 @@ octocap_result_t octocap_subscriber_create(const octocap_subscriber_config_t* cf
     capi::require(out, "out");
     *out = nullptr;
     capi::require(cfg, "cfg");
-    if (cfg->struct_size != sizeof(octocap_subscriber_config_t))
-      throw Error(Errc::struct_size, "octocap_subscriber_config_t.struct_size is " + std::to_string(cfg->struct_size) +
-                                         ", expected " + std::to_string(sizeof(octocap_subscriber_config_t)));
+    capi::check_size(cfg->struct_size, capi::kSubscriberConfigSizes, "octocap_subscriber_config_t");
     const StreamConfig sc =
         capi::stream_config(cfg->domain_id, cfg->qos, cfg->history_depth, cfg->source_id, cfg->topic, sizeof cfg->topic);
 #ifdef OCTOCAP_HAVE_DDS
@@ -76,26 +89,49 @@ octocap_result_t octocap_subscriber_create(const octocap_subscriber_config_t* cf
     *out = capi::make_handle<octocap_subscriber_t>(std::move(sub));
 #else
     (void)sc;
-    throw Error(Errc::unsupported, "this build of octocap has no DDS streaming (OCTOCAP_WITH_DDS=OFF)");
+    no_dds();
 #endif
   });
 }
 
 void octocap_subscriber_destroy(octocap_subscriber_t* s) { capi::destroy_handle(s); }
 
+octocap_result_t octocap_subscriber_take_frame(octocap_subscriber_t* s, int32_t timeout_ms, octocap_frame_t** out) {
+  bool taken = false;
+  const octocap_result_t r = capi::guard([&] {
+    capi::require(out, "out");
+    *out = nullptr;
+#ifdef OCTOCAP_HAVE_DDS
+    DdsSubscriber& sub = subscriber_of(s);
+    if (!sub.take_next(timeout_ms)) return;
+    *out = capi::make_frame(std::make_shared<const FrameResult>(sub.frame()));
+    taken = true;
+#else
+    (void)timeout_ms;
+    subscriber_of(s);
+#endif
+  });
+  return capi::status_unless(r, taken, OCTOCAP_STATUS_TIMEOUT);
+}
+
 octocap_result_t octocap_subscriber_take(octocap_subscriber_t* s, int32_t timeout_ms) {
   return capi::guard([&] {
-    capi::checked(s, "subscriber");
-    if (!s->subscriber->take_next(timeout_ms))
+#ifdef OCTOCAP_HAVE_DDS
+    if (!subscriber_of(s).take_next(timeout_ms))
       throw Error(Errc::no_result, "no pose arrived within " + std::to_string(timeout_ms) + " ms");
+#else
+    (void)timeout_ms;
+    subscriber_of(s);
+#endif
   });
 }
 
 octocap_result_t octocap_subscriber_get_stream_info(const octocap_subscriber_t* s, octocap_stream_info_t* out) {
   return capi::guard([&] {
-    capi::checked(s, "subscriber");
     capi::require(out, "out");
-    const StreamStats& st = s->subscriber->stats();
+#ifdef OCTOCAP_HAVE_DDS
+    const DdsSubscriber& sub = subscriber_of(s);
+    const StreamStats& st = sub.stats();
     *out = octocap_stream_info_t{};
     out->frames_received = st.frames_received;
     out->frames_lost = st.frames_lost;
@@ -104,10 +140,15 @@ octocap_result_t octocap_subscriber_get_stream_info(const octocap_subscriber_t* 
     out->rejected = st.rejected;
     out->source_id = st.source_id;
     out->definition_counter = st.definition_counter;
-    out->layout = static_cast<octocap_layout_t>(s->subscriber->layout());
+    out->layout = static_cast<octocap_layout_t>(sub.layout());
     out->has_definition = st.has_definition ? 1 : 0;
+#else
+    subscriber_of(s);
+#endif
   });
 }
+
+// Deprecated 0.x queries of the current received frame.
 
 octocap_result_t octocap_subscriber_get_frame_info(const octocap_subscriber_t* s, octocap_frame_info_t* out) {
   return capi::guard([&] { capi::query_frame_info(current(s), out); });

@@ -16,6 +16,7 @@ enum class Errc : int {
   not_enough_views = -8,
   no_result = -9,
   unsupported = -10,
+  out_of_memory = -11,
   internal = -99,
 };
 

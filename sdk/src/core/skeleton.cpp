@@ -1,3 +1,6 @@
+#include "core/frame.h"
+
+#include <atomic>
 #include "core/skeleton.h"
 
 namespace octocap {
@@ -39,6 +42,17 @@ const std::array<Eigen::Vector3d, kBoneCount>& tpose_directions() {
       Eigen::Vector3d(0, -1, 0), Eigen::Vector3d(0, -1, 0), Eigen::Vector3d(0, -1, 0),
       Eigen::Vector3d(0, -1, 0)};
   return dirs;
+}
+
+}  // namespace octocap
+
+namespace octocap {
+
+uint32_t next_definition_counter() {
+  static std::atomic<uint32_t> counter{0};
+  uint32_t n = ++counter;
+  if (n == 0) n = ++counter;  // wrapped: 0 means "none" to consumers
+  return n;
 }
 
 }  // namespace octocap

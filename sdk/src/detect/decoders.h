@@ -7,7 +7,7 @@
 
 #include "detect/image.h"
 #include "detect/model_card.h"
-#include "io/openpose_json.h"
+#include "core/person2d.h"
 
 namespace octocap {
 

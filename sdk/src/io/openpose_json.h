@@ -4,13 +4,9 @@
 #include <vector>
 
 #include "core/layout.h"
+#include "core/person2d.h"
 
 namespace octocap {
-
-struct Keypoint2D {
-  double x = 0, y = 0, confidence = 0;
-};
-using Person2D = std::vector<Keypoint2D>;
 
 // Every person of one file. keypoint_count 0 accepts any count (all people must agree), else it is enforced.
 // Throws Error(io / parse) naming the file.

@@ -23,10 +23,41 @@ bool guess_z_up(const Calibration& calib) {
   return std::abs(down.z()) > std::abs(down.y());
 }
 
+
+// Every value checked, and every per-frame cost bounded: a config that could take seconds a frame is refused.
+void validate(const SessionConfig& c) {
+  const double values[] = {c.delta, c.pixel_tolerance, c.min_confidence, c.outlier_threshold_px, c.filter_min_cutoff,
+                           c.filter_beta};
+  for (double v : values)
+    if (!std::isfinite(v)) throw Error(Errc::invalid_argument, "a config value is NaN or infinite");
+  if (!c.volume_min.allFinite() || !c.volume_max.allFinite())
+    throw Error(Errc::invalid_argument, "config.volume_min/volume_max must be finite");
+  // Subdivision visits about max_candidates * 8 cubes per level and log2(volume / delta) levels: a 1 mm floor and a
+  // cap of 4096 candidates keep a frame in milliseconds whatever the volume.
+  if (!(c.delta >= 0.001)) throw Error(Errc::invalid_argument, "config.delta_m must be >= 0.001 (1 mm)");
+  if (c.pixel_tolerance < 0) throw Error(Errc::invalid_argument, "config.pixel_tolerance must be >= 0");
+  if (c.max_candidates < 1 || c.max_candidates > 4096)
+    throw Error(Errc::invalid_argument, "config.max_candidates must be 1..4096");
+  if (!(c.outlier_threshold_px > 0)) throw Error(Errc::invalid_argument, "config.outlier_threshold_px must be > 0");
+  if (!(c.filter_min_cutoff > 0) || c.filter_beta < 0)
+    throw Error(Errc::invalid_argument, "config.filter_min_cutoff_hz must be > 0 and filter_beta >= 0");
+  if (c.volume_min != c.volume_max && (c.volume_max.array() <= c.volume_min.array()).any())
+    throw Error(Errc::invalid_argument, "config.volume_max must exceed volume_min on every axis");
+}
+
+// NaN/inf, zero confidence or OpenPose's (0, 0) placeholder is "not detected", not an error: detectors emit them.
+Keypoint2D clean(const Keypoint2D& k) {
+  const bool ok = std::isfinite(k.x) && std::isfinite(k.y) && std::isfinite(k.confidence) && k.confidence > 0 &&
+                  !(k.x == 0 && k.y == 0);
+  return ok ? k : Keypoint2D{};
+}
+
 }  // namespace
 
 Session::Session(const SessionConfig& config, Calibration calib)
     : config_(config), calib_(std::move(calib)), layout_(&layout(config.layout)) {
+  validate(config_);
+  if (config_.volume_min != config_.volume_max) config_.volume = Eigen::AlignedBox3d(config_.volume_min, config_.volume_max);
   const int cams = static_cast<int>(calib_.size());
   if (cams < 2) throw Error(Errc::not_enough_views, "a session needs at least 2 cameras, the calibration has " +
                                                         std::to_string(cams));
@@ -54,10 +85,12 @@ Session::Session(const SessionConfig& config, Calibration calib)
   filters_.assign(K, OneEuroFilter3(config_.filter_min_cutoff, config_.filter_beta));
   frame_.keypoints.assign(K, PointResult{});
   frame_.layout = config_.layout;
+  frame_.view_count = static_cast<uint32_t>(cams);
+  frame_.definition_counter = next_definition_counter();
   frame_.info.frame_index = config_.first_frame_index - 1;
   if (config_.publish) {
 #ifdef OCTOCAP_HAVE_DDS
-    publisher_ = std::make_unique<DdsPublisher>(config_.stream, config_.layout);
+    publisher_ = std::make_unique<DdsPublisher>(config_.stream, config_.layout, frame_.definition_counter);
 #else
     throw Error(Errc::unsupported, "this build of octocap has no DDS streaming (OCTOCAP_WITH_DDS=OFF)");
 #endif
@@ -119,7 +152,7 @@ PointResult Session::solve_keypoint(const std::vector<ViewRay>& rays) const {
   return solve_subdivision(calib_, rays, p);
 }
 
-void Session::solve(const std::vector<std::vector<Person2D>>& people, int64_t timestamp_us) {
+bool Session::solve(const std::vector<std::vector<Person2D>>& people, int64_t timestamp_us) {
   const auto t0 = std::chrono::steady_clock::now();
   const size_t V = calib_.size(), K = layout_->keypoints.size();
   if (people.size() != V)
@@ -134,14 +167,23 @@ void Session::solve(const std::vector<std::vector<Person2D>>& people, int64_t ti
 
   // A "person" without three confident keypoints (all NaN, all below min_confidence) is nobody: it must
   // not count as a view that saw someone.
+  if (people.size() > 0)
+    for (size_t v = 0; v < V; ++v)
+      if (people[v].size() > kMaxPeoplePerView)
+        throw Error(Errc::invalid_argument, "view " + std::to_string(v) + " has more than " +
+                                                std::to_string(kMaxPeoplePerView) + " people");
   std::vector<std::vector<Person2D>> usable(V);
   std::vector<std::vector<int>> original(V);
   for (size_t v = 0; v < V; ++v)
     for (size_t p = 0; p < people[v].size(); ++p) {
+      Person2D person(K);
       int confident = 0;
-      for (const Keypoint2D& k : people[v][p]) confident += k.confidence >= config_.min_confidence;
+      for (size_t k = 0; k < K; ++k) {
+        person[k] = clean(people[v][p][k]);
+        confident += person[k].confidence >= config_.min_confidence;
+      }
       if (confident < 3) continue;
-      usable[v].push_back(people[v][p]);
+      usable[v].push_back(std::move(person));
       original[v].push_back(static_cast<int>(p));
     }
   frame_.selected = select_people(calib_, usable, raw_previous_, {config_.min_confidence, 2 * config_.outlier_threshold_px});
@@ -168,8 +210,7 @@ void Session::solve(const std::vector<std::vector<Person2D>>& people, int64_t ti
     raw_previous_.clear();
     for (auto& f : filters_) f.reset();
     publish();
-    throw Error(Errc::not_enough_views, "a person was found in " + std::to_string(with_person) +
-                                            " views, at least " + std::to_string(config_.min_views) + " are needed");
+    return false;
   }
 
   pool_->parallel_for(K, [&](size_t k) {
@@ -203,6 +244,7 @@ void Session::solve(const std::vector<std::vector<Person2D>>& people, int64_t ti
   derive_skeleton();
   frame_.info.solve_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   publish();
+  return frame_.has_person();
 }
 
 void Session::publish() {

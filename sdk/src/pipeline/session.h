@@ -10,7 +10,7 @@
 #include "core/layout.h"
 #include "core/parallel.h"
 #include "detect/detector.h"
-#include "pipeline/frame_result.h"
+#include "core/frame.h"
 #include "stream/stream_config.h"
 #include "io/openpose_json.h"
 #include "rig/bone_solver.h"
@@ -18,6 +18,9 @@
 #include "solve/one_euro.h"
 
 namespace octocap {
+
+// More 2D people than this in one view is no capture (a crowd, a detector gone wrong): refused.
+constexpr uint32_t kMaxPeoplePerView = 64;
 
 enum class Method : int { subdivision = 0, triangulation = 1, automatic = 2 };
 enum class UpAxis : int { y = 0, z = 1, automatic = 2 };
@@ -34,7 +37,9 @@ struct SessionConfig {
   int max_candidates = 8;
   double min_confidence = 0.3;
   double outlier_threshold_px = 15;
-  Eigen::AlignedBox3d volume;  // empty: derived from the calibration
+  Eigen::Vector3d volume_min = Eigen::Vector3d::Zero();  // min == max: derived from the calibration
+  Eigen::Vector3d volume_max = Eigen::Vector3d::Zero();
+  Eigen::AlignedBox3d volume;  // set from volume_min/max by the session (empty: derived from the calibration)
   double filter_min_cutoff = 1.5;
   double filter_beta = 20.0;
   unsigned threads = 0;
@@ -43,7 +48,7 @@ struct SessionConfig {
   StreamConfig stream;
   uint16_t vmc_port = 0;          // 0: no VMC output
   std::string vmc_host = "127.0.0.1";
-  DetectorConfig detector;        // for solve_images(); the model is loaded on first use
+  DetectorConfig detector;        // for solve_images() unless set_detector(); loaded on first use
 };
 
 class DdsPublisher;
@@ -55,12 +60,15 @@ class Session {
   Session(const SessionConfig& config, Calibration calib);
   ~Session();
 
-  // people[view][person]; throws Error(camera_mismatch / invalid_argument / not_enough_views). After
-  // not_enough_views the frame is empty (all missing) and the session stays usable.
-  void solve(const std::vector<std::vector<Person2D>>& people, int64_t timestamp_us);
+  // people[view][person]; throws Error(camera_mismatch / invalid_argument). Returns false when too few views
+  // saw a person: the frame then holds nobody (all missing) and the session goes on.
+  bool solve(const std::vector<std::vector<Person2D>>& people, int64_t timestamp_us);
   // Detects people in one image per camera (calibration order), then solve(). Throws as solve() does, and
   // Error(invalid_argument) for bad images or a model whose layout is not the session's. (session_images.cpp)
-  void solve_images(const std::vector<ImageView>& images, int64_t timestamp_us);
+  bool solve_images(const std::vector<ImageView>& images, int64_t timestamp_us);
+  // Loads the detector solve_images() uses now (else the config's, on first use). Throws for a model of another
+  // layout than the session's.
+  void set_detector(const DetectorConfig& config);
   // What the detector found in each view during the last solve_images(), view pixels.
   const std::vector<std::vector<DetectedPerson>>& detections() const { return detections_; }
   const Detector* detector() const { return detector_.get(); }

@@ -22,18 +22,21 @@ std::vector<Person2D> Session::reprojected_keypoints() const {
   return hints;
 }
 
-void Session::solve_images(const std::vector<ImageView>& images, int64_t timestamp_us) {
+void Session::set_detector(const DetectorConfig& config) {
+  auto detector = std::make_unique<Detector>(config);
+  if (detector->card().layout != layout_->id)
+    throw Error(Errc::invalid_argument, "model " + detector->card().name + " gives " +
+                                            layout(detector->card().layout).name + " keypoints; create the session "
+                                            "with that layout (it has " + layout_->name + ")");
+  detector_ = std::move(detector);
+  detections_.clear();
+}
+
+bool Session::solve_images(const std::vector<ImageView>& images, int64_t timestamp_us) {
   if (images.size() != calib_.size())
     throw Error(Errc::camera_mismatch, "got " + std::to_string(images.size()) + " images, the calibration has " +
                                            std::to_string(calib_.size()) + " cameras");
-  if (!detector_) {
-    auto detector = std::make_unique<Detector>(config_.detector);
-    if (detector->card().layout != layout_->id)
-      throw Error(Errc::invalid_argument, "model " + detector->card().name + " gives " +
-                                              layout(detector->card().layout).name + " keypoints; create the session "
-                                              "with that layout (it has " + layout_->name + ")");
-    detector_ = std::move(detector);
-  }
+  if (!detector_) set_detector(config_.detector);
   // Images at another size than the calibration's (a preview stream, a downscaled render) are fine when the
   // aspect matches: keypoints are scaled to calibration pixels for the solve; detections stay in image pixels.
   std::vector<Eigen::Vector2d> scale(images.size(), Eigen::Vector2d::Ones());
@@ -59,7 +62,7 @@ void Session::solve_images(const std::vector<ImageView>& images, int64_t timesta
       for (Keypoint2D& k : p) k.x = (k.x + 0.5) * scale[v].x() - 0.5, k.y = (k.y + 0.5) * scale[v].y() - 0.5;
       people[v].push_back(std::move(p));
     }
-  solve(people, timestamp_us);
+  return solve(people, timestamp_us);
 }
 
 }  // namespace octocap

@@ -3,20 +3,12 @@
 #include <Eigen/Geometry>
 #include <array>
 
+#include "core/frame.h"
 #include "core/skeleton.h"
 
 namespace octocap {
 
-struct BonePose {
-  Eigen::Quaterniond local = Eigen::Quaterniond::Identity();   // relative to the parent bone
-  Eigen::Quaterniond global = Eigen::Quaterniond::Identity();  // rig frame, from the T-pose
-  Eigen::Vector3d head = Eigen::Vector3d::Zero();              // rig frame, metres
-  double length = 0;
-  bool valid = false;
-};
-
 using SkeletonJoints = std::array<Eigen::Vector3d, kJointCount>;  // rig frame; NaN where missing
-using SkeletonPose = std::array<BonePose, kBoneCount>;
 
 // The root's orientation comes from the hip line and the world's up axis (Y); every other bone takes the
 // smallest rotation that turns its template direction into its measured direction, expressed in its parent's

@@ -2,17 +2,6 @@
 
 namespace octocap {
 
-ViewRay make_view_ray(const Camera& cam, int view, const Eigen::Vector2d& pixel, double confidence) {
-  ViewRay r;
-  r.view = view;
-  r.pixel = pixel;
-  r.normalized = cam.pixel_to_normalized(pixel);
-  r.origin = cam.center();
-  r.direction = (cam.R.transpose() * Eigen::Vector3d(r.normalized.x(), r.normalized.y(), 1.0)).normalized();
-  r.confidence = confidence;
-  return r;
-}
-
 void score_point(const Calibration& calib, const std::vector<ViewRay>& rays, uint64_t mask, PointResult& r) {
   double err = 0, conf = 0;
   uint32_t n = 0;

@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "core/camera.h"
-#include "io/openpose_json.h"
+#include "core/person2d.h"
 #include "solve/observation.h"
 
 namespace octocap {

@@ -9,10 +9,6 @@ struct TriangulationParams {
   double outlier_threshold_px = 15;
 };
 
-// Weighted DLT over the views in `mask` (undistorted normalised coordinates). Returns false when degenerate.
-bool triangulate_dlt(const Calibration& calib, const std::vector<ViewRay>& rays, uint64_t mask, bool weighted,
-                     Eigen::Vector3d& out);
-
 // DLT on all views, then, while the worst view reprojects farther than the threshold and more than
 // min_views remain, drop the view whose removal leaves the smallest worst error.
 PointResult solve_triangulation(const Calibration& calib, const std::vector<ViewRay>& rays,

@@ -16,7 +16,7 @@ struct DdsPublisher::Impl {
   explicit Impl(uint32_t domain) : participant(domain) {}
 };
 
-DdsPublisher::DdsPublisher(const StreamConfig& config, LayoutId layout)
+DdsPublisher::DdsPublisher(const StreamConfig& config, LayoutId layout, uint32_t definition_counter)
     : impl_(std::make_unique<Impl>(config.domain_id)),
       config_(config),
       capacity_(config.qos == StreamQos::record ? std::max<size_t>(config.history_depth, 64) : 1) {
@@ -31,6 +31,7 @@ DdsPublisher::DdsPublisher(const StreamConfig& config, LayoutId layout)
   impl_->pose_writer = dds_create_writer(p, pose_topic, pq, nullptr);
   dds_delete_qos(pq);
   check_dds(impl_->pose_writer, "creating the pose writer");
+  impl_->definition_counter = definition_counter;
   fill_definition(layout, config.source_id, impl_->definition_counter, impl_->definition);
   check_dds(dds_write(def_writer, &impl_->definition.sample), "writing the skeleton definition");
   thread_ = std::thread([this] { run(); });

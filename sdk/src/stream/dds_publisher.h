@@ -7,14 +7,15 @@
 #include <mutex>
 #include <thread>
 
-#include "pipeline/frame_result.h"
+#include "core/frame.h"
 #include "stream/stream_config.h"
 
 namespace octocap {
 
 class DdsPublisher {
  public:
-  DdsPublisher(const StreamConfig& config, LayoutId layout);
+  // `definition_counter` goes out with the definition and every pose (the source's next_definition_counter()).
+  DdsPublisher(const StreamConfig& config, LayoutId layout, uint32_t definition_counter = 1);
   ~DdsPublisher();
   DdsPublisher(const DdsPublisher&) = delete;
   DdsPublisher& operator=(const DdsPublisher&) = delete;

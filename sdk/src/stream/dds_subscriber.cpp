@@ -45,7 +45,12 @@ void DdsSubscriber::take_definitions() {
       bool known = false;
       for (LayoutId l : all_layouts()) known = known || static_cast<int32_t>(l) == d->layout;
       if (ours && d->version == octocap_wire_VERSION && known) {
-        layout_ = static_cast<LayoutId>(d->layout);
+        const auto layout = static_cast<LayoutId>(d->layout);
+        if (!stats_.has_definition || layout != layout_ || d->change_counter != stats_.definition_counter ||
+            d->source_id != definition_source_)
+          local_definition_ = next_definition_counter();
+        layout_ = layout;
+        definition_source_ = d->source_id;
         stats_.definition_counter = d->change_counter;
         stats_.has_definition = true;
       } else if (ours) {
@@ -72,7 +77,9 @@ bool DdsSubscriber::take_one_pose() {
         if (!stats_.has_definition && pose->keypoints._length != octocap::layout(layout_).keypoints.size()) {
           // The definition arrives reliably but may trail the first poses; until then, guess by count.
           try {
-            layout_ = layout_for_count(pose->keypoints._length);
+            const LayoutId guess = layout_for_count(pose->keypoints._length);
+            if (guess != layout_ || local_definition_ == 0) local_definition_ = next_definition_counter();
+            layout_ = guess;
           } catch (const Error&) {
           }
         }
@@ -90,6 +97,10 @@ bool DdsSubscriber::take_one_pose() {
           }
           last_frame_ = f;
           stats_.source_id = pose->source_id;
+          if (local_definition_ == 0) local_definition_ = next_definition_counter();
+          next.source_id = pose->source_id;
+          next.definition_counter = local_definition_;
+          next.layout = layout_;
           ++stats_.frames_received;
           frame_ = std::move(next);
           accepted = true;

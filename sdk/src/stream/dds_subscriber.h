@@ -3,7 +3,7 @@
 #pragma once
 #include <memory>
 
-#include "pipeline/frame_result.h"
+#include "core/frame.h"
 #include "stream/stream_config.h"
 
 namespace octocap {
@@ -43,6 +43,8 @@ class DdsSubscriber {
   StreamStats stats_;
   LayoutId layout_ = LayoutId::body25;
   int64_t last_frame_ = -1;
+  uint32_t local_definition_ = 0;   // this process's counter for the definition in use (0: none yet)
+  uint32_t definition_source_ = 0;  // source of the definition in use
 };
 
 }  // namespace octocap

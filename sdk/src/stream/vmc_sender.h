@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-#include "pipeline/frame_result.h"
+#include "core/frame.h"
 
 namespace octocap {
 

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "octocap_stream.h"
-#include "pipeline/frame_result.h"
+#include "core/frame.h"
 
 namespace octocap {
 

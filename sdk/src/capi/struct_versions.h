@@ -1,0 +1,69 @@
+// Every size a released header gave each config struct, and the two moves that keep old callers working: filling
+// only the caller's size with defaults, and reading a caller's struct into the current one (defaults for what its
+// version did not have). The sizes are those of the headers in git history (tests/abi/ builds callers against them).
+#pragma once
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <initializer_list>
+#include <string>
+
+#include "capi/boundary.h"
+#include "octocap/octocap.h"
+
+namespace octocap::capi {
+
+// octocap_session_config_t: 0.1 (84), 0.2 streaming (152), 0.2 VMC = 1.0 (216), 0.3 with the detector config nested
+// at its end (760; see LegacySessionConfig03).
+constexpr std::initializer_list<uint32_t> kSessionConfigSizes = {84, 152, 216, 760};
+// octocap_detector_config_t: 0.3 (540), 0.3 parallel_views = 1.0 (544).
+constexpr std::initializer_list<uint32_t> kDetectorConfigSizes = {540, 544};
+constexpr std::initializer_list<uint32_t> kSubscriberConfigSizes = {52};
+// octocap_extrinsics_options_t: without (32) and with `refine` (36).
+constexpr std::initializer_list<uint32_t> kExtrinsicsOptionsSizes = {32, 36};
+
+// The 0.3 session config: today's fields, then the detector config (now set with octocap_session_set_detector()).
+struct LegacySessionConfig03 {
+  octocap_session_config_t base;
+  octocap_detector_config_t detector;
+};
+static_assert(sizeof(octocap_session_config_t) == 216, "1.0's session config is 0.2's: grow it only at its end");
+static_assert(offsetof(LegacySessionConfig03, detector) == 216 && sizeof(LegacySessionConfig03) == 760,
+              "the 0.3 layout must stay byte-exact");
+static_assert(sizeof(octocap_detector_config_t) == 544 && sizeof(octocap_subscriber_config_t) == 52 &&
+                  sizeof(octocap_extrinsics_options_t) == 36,
+              "a config struct grew: add its new size to the tables above and to tests/abi");
+
+inline bool known_size(uint32_t size, std::initializer_list<uint32_t> sizes) {
+  return std::find(sizes.begin(), sizes.end(), size) != sizes.end();
+}
+
+inline std::string size_list(std::initializer_list<uint32_t> sizes) {
+  std::string s;
+  for (uint32_t n : sizes) s += (s.empty() ? "" : ", ") + std::to_string(n);
+  return s;
+}
+
+inline void check_size(uint32_t size, std::initializer_list<uint32_t> sizes, const char* name) {
+  if (!known_size(size, sizes))
+    throw Error(Errc::struct_size, std::string(name) + ".struct_size is " + std::to_string(size) +
+                                       "; the sizes of released headers are " + size_list(sizes) +
+                                       " (fill it with its _init() first)");
+}
+
+// Writes the first `size` bytes of `defaults` (whose struct_size is then `size`) into `out`.
+template <class T>
+void write_defaults(void* out, uint32_t size, T defaults) {
+  defaults.struct_size = size;
+  std::memcpy(out, &defaults, std::min<size_t>(size, sizeof(T)));
+}
+
+// The caller's struct as the current one: its `struct_size` bytes over the defaults.
+template <class T>
+T widen(const T& given, T defaults) {
+  std::memcpy(&defaults, &given, std::min<size_t>(given.struct_size, sizeof(T)));
+  defaults.struct_size = sizeof(T);
+  return defaults;
+}
+
+}  // namespace octocap::capi

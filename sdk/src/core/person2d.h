@@ -1,0 +1,13 @@
+// The central 2D type: one person's keypoints in one view, in a layout's order. Detectors produce it, file
+// readers parse it, the solve consumes it.
+#pragma once
+#include <vector>
+
+namespace octocap {
+
+struct Keypoint2D {
+  double x = 0, y = 0, confidence = 0;  // image pixels; confidence 0 = not detected
+};
+using Person2D = std::vector<Keypoint2D>;
+
+}  // namespace octocap
