@@ -12,7 +12,7 @@ namespace Octocap
         public static Calibration Load(string path)
         {
             CalibrationHandle h;
-            OctocapException.Check(NativeMethods.octocap_calibration_load(path, out h));
+            OctocapException.Check(NativeMethods.octocap_calibration_load(NativeMethods.Utf8Z(path), out h));
             return new Calibration(h);
         }
 
@@ -25,7 +25,7 @@ namespace Octocap
             return new Calibration(h);
         }
 
-        public void Save(string path) => OctocapException.Check(NativeMethods.octocap_calibration_save(Handle, path));
+        public void Save(string path) => OctocapException.Check(NativeMethods.octocap_calibration_save(Handle, NativeMethods.Utf8Z(path)));
 
         public int CameraCount
         {

@@ -32,6 +32,13 @@ namespace Octocap
         protected override bool ReleaseHandle() { NativeMethods.octocap_motion_destroy(handle); return true; }
     }
 
+    public sealed class FrameHandle : SafeHandle
+    {
+        public FrameHandle() : base(IntPtr.Zero, true) { }
+        public override bool IsInvalid => handle == IntPtr.Zero;
+        protected override bool ReleaseHandle() { NativeMethods.octocap_frame_release(handle); return true; }
+    }
+
     public sealed class SubscriberHandle : SafeHandle
     {
         public SubscriberHandle() : base(IntPtr.Zero, true) { }

@@ -16,16 +16,28 @@ namespace Octocap
     public static class Library
     {
         public const uint AbiVersion = 1;
+        /// <summary>The header version these bindings mirror (OCTOCAP_VERSION_NUMBER: major * 10000 + minor * 100 + patch).</summary>
+        public const uint BindingsVersionNumber = 10000;
 
         public static string Version => NativeMethods.Utf8(NativeMethods.octocap_version());
+        public static uint VersionNumber => NativeMethods.octocap_version_number();
 
-        /// <summary>Throws when the native library was built for another ABI than these bindings.</summary>
-        public static void CheckAbi()
+        /// <summary>Throws unless the native library can serve these bindings: the same ABI line and major version,
+        /// and not older than the header they mirror (a newer library keeps working with older bindings).</summary>
+        public static void CheckVersion()
         {
-            uint native = NativeMethods.octocap_abi_version();
-            if (native != AbiVersion)
-                throw new OctocapException(Result.Unsupported, "liboctocap has ABI " + native + ", these bindings expect " + AbiVersion);
+            uint abi = NativeMethods.octocap_abi_version();
+            if (abi != AbiVersion)
+                throw new OctocapException(Result.Unsupported, "liboctocap has ABI " + abi + ", these bindings expect " + AbiVersion);
+            uint native = VersionNumber;
+            if (native / 10000 != BindingsVersionNumber / 10000 || native < BindingsVersionNumber)
+                throw new OctocapException(Result.Unsupported, "liboctocap is " + Version + ", these bindings need " +
+                                           BindingsVersionNumber / 10000 + ".x, at least " + BindingsVersionNumber / 10000 +
+                                           "." + BindingsVersionNumber / 100 % 100);
         }
+
+        [Obsolete("Use CheckVersion")]
+        public static void CheckAbi() => CheckVersion();
 
         public static int KeypointCount(Layout layout) => (int)NativeMethods.octocap_layout_keypoint_count(layout);
         public static string KeypointName(Layout layout, int index) =>
@@ -38,11 +50,7 @@ namespace Octocap
             return info;
         }
 
-        public static unsafe string BoneName(BoneId bone)
-        {
-            BoneInfo info = GetBoneInfo(bone);
-            return Marshal.PtrToStringAnsi((IntPtr)info.Name);
-        }
+        public static string BoneName(BoneId bone) => GetBoneInfo(bone).Name.ToString();
 
         // The delegate handed to native code must outlive every call into it: held here, never collected.
         static readonly NativeLogCallback s_trampoline = Trampoline;

@@ -13,12 +13,21 @@ namespace Octocap
 
         public Motion(string path)
         {
-            OctocapException.Check(NativeMethods.octocap_motion_open(path, out _handle));
+            OctocapException.Check(NativeMethods.octocap_motion_open(NativeMethods.Utf8Z(path), out _handle));
             uint frames;
             double rate;
             OctocapException.Check(NativeMethods.octocap_motion_info(_handle, out frames, out rate));
             FrameCount = (int)frames;
             RateHz = rate;
+        }
+
+        /// <summary>Frame <paramref name="index"/> (dispose it): one person when the file has joints there, rig frame.</summary>
+        public Frame GetFrame(int index)
+        {
+            if (index < 0) throw new ArgumentOutOfRangeException(nameof(index));
+            FrameHandle f;
+            OctocapException.Check(NativeMethods.octocap_motion_get_frame(_handle, (uint)index, out f));
+            return new Frame(f);
         }
 
         /// <summary>The 15 joints of a frame, rig frame (Y up, metres); returns how many were written.</summary>

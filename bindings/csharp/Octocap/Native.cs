@@ -5,11 +5,33 @@ using System.Runtime.InteropServices;
 
 namespace Octocap
 {
+    /// <summary>octocap_result_t: Ok, positive statuses for normal outcomes that produced nothing, negative errors.</summary>
     public enum Result : int
     {
-        Ok = 0, InvalidArgument = -1, InvalidHandle = -2, StructSize = -3, Io = -4, Parse = -5,
+        Ok = 0, NoPerson = 1, Timeout = 2,
+        InvalidArgument = -1, InvalidHandle = -2, StructSize = -3, Io = -4, Parse = -5,
         BufferTooSmall = -6, CameraMismatch = -7, NotEnoughViews = -8, NoResult = -9, Unsupported = -10,
-        Internal = -99
+        OutOfMemory = -11, Internal = -99
+    }
+
+    /// <summary>Three floats (metres or a unit direction), laid out as C's float[3].</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct Vec3
+    {
+        public float X, Y, Z;
+        public Vec3(float x, float y, float z) { X = x; Y = y; Z = z; }
+        public override string ToString() => "(" + X + ", " + Y + ", " + Z + ")";
+    }
+
+    /// <summary>A fixed 32-byte, NUL-terminated UTF-8 name (C's char[32]), read without unsafe code.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public unsafe struct Name32
+    {
+        fixed byte _bytes[32];
+        public override string ToString()
+        {
+            fixed (byte* b = _bytes) return NativeMethods.Utf8((IntPtr)b, 32);
+        }
     }
 
     public enum LogLevel : int { Debug = 0, Info = 1, Warning = 2, Error = 3 }
@@ -45,9 +67,9 @@ namespace Octocap
     }
 
     [StructLayout(LayoutKind.Sequential)]
-    public unsafe struct Joint
+    public struct Joint
     {
-        public fixed float Position[3];
+        public Vec3 Position;
         public float Confidence;
         public float ReprojectionErrorPx;
         public uint ViewsUsed;
@@ -62,15 +84,16 @@ namespace Octocap
     }
 
     [StructLayout(LayoutKind.Sequential)]
-    public unsafe struct BonePose
+    public struct BonePose
     {
         public Quat LocalRotation;
         public Quat GlobalRotation;
-        public fixed float HeadPosition[3];
+        public Vec3 HeadPosition;
         public float LengthM;
         public uint Valid;
     }
 
+    /// <summary>octocap_frame_info_t (0.x; frames give <see cref="FrameSummary"/> and <see cref="Person"/>).</summary>
     [StructLayout(LayoutKind.Sequential)]
     public struct FrameInfo
     {
@@ -84,13 +107,44 @@ namespace Octocap
     }
 
     [StructLayout(LayoutKind.Sequential)]
-    public unsafe struct BoneInfo
+    public struct BoneInfo
     {
-        public fixed byte Name[32];
+        public Name32 Name;
         public int ParentBone;
         public int HeadJoint;
         public int TailJoint;
-        public fixed float RestDirection[3];
+        public Vec3 RestDirection;
+    }
+
+    /// <summary>octocap_frame_summary_t: what a frame holds.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct FrameSummary
+    {
+        public uint StructSize;
+        public uint PersonCount;
+        public long FrameIndex;
+        public long TimestampUs;
+        public Layout Layout;
+        public uint KeypointCount;
+        public uint DefinitionCounter;
+        public uint SourceId;
+        public uint ViewCount;
+        public uint JointsInRigFrame;
+        public float SolveMs;
+    }
+
+    /// <summary>octocap_person_t: one person of a frame.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct Person
+    {
+        public uint StructSize;
+        public uint Id;
+        public uint KeypointsSolved;
+        public uint KeypointsTotal;
+        public uint JointsSolved;
+        public uint ViewsWithPerson;
+        public float MeanReprojectionErrorPx;
+        public float Confidence;
     }
 
     [StructLayout(LayoutKind.Sequential)]
@@ -122,8 +176,8 @@ namespace Octocap
         public uint MaxCandidates;
         public float MinConfidence;
         public float OutlierThresholdPx;
-        public fixed float VolumeMin[3];
-        public fixed float VolumeMax[3];
+        public Vec3 VolumeMin;
+        public Vec3 VolumeMax;
         public float FilterMinCutoffHz;
         public float FilterBeta;
         public uint WorkerThreads;
@@ -136,21 +190,32 @@ namespace Octocap
         public fixed byte StreamTopic[32];
         public uint VmcPort;
         public fixed byte VmcHost[64];
-        public DetectorConfig Detector;
 
-        /// <summary>The library's defaults (octocap_session_config_init), struct_size set.</summary>
+        /// <summary>The library's defaults for this struct's size (octocap_session_config_defaults).</summary>
         public static SessionConfig Default
         {
             get
             {
-                SessionConfig c;
-                NativeMethods.octocap_session_config_init(out c);
+                var c = new SessionConfig();
+                OctocapException.Check(NativeMethods.octocap_session_config_defaults(ref c, (uint)sizeof(SessionConfig)));
                 return c;
             }
         }
+
+        /// <summary>The DDS topic base name (UTF-8, at most 31 bytes).</summary>
+        public void SetStreamTopic(string topic)
+        {
+            fixed (byte* t = StreamTopic) NativeMethods.CopyUtf8(topic, t, 32, "stream topic");
+        }
+
+        /// <summary>The VMC receiver's host (UTF-8, at most 63 bytes).</summary>
+        public void SetVmcHost(string host)
+        {
+            fixed (byte* h = VmcHost) NativeMethods.CopyUtf8(host, h, 64, "VMC host");
+        }
     }
 
-    /// <summary>octocap_detector_config_t (also nested in <see cref="SessionConfig"/>).</summary>
+    /// <summary>octocap_detector_config_t, given to <see cref="Session.SetDetector"/> or a detector.</summary>
     [StructLayout(LayoutKind.Sequential)]
     public unsafe struct DetectorConfig
     {
@@ -167,11 +232,17 @@ namespace Octocap
         /// <summary>A shipped model's name ("movenet-thunder") or an .onnx path; null or "" for the mode's default.</summary>
         public void SetModel(string model)
         {
-            byte[] utf8 = System.Text.Encoding.UTF8.GetBytes(model ?? "");
-            if (utf8.Length >= 512) throw new OctocapException(Result.InvalidArgument, "model path is longer than 511 bytes");
-            fixed (byte* m = Model)
+            fixed (byte* m = Model) NativeMethods.CopyUtf8(model ?? "", m, 512, "model path");
+        }
+
+        /// <summary>The library's defaults for this struct's size (octocap_detector_config_defaults).</summary>
+        public static DetectorConfig Default
+        {
+            get
             {
-                for (int i = 0; i < 512; ++i) m[i] = i < utf8.Length ? utf8[i] : (byte)0;
+                var c = new DetectorConfig();
+                OctocapException.Check(NativeMethods.octocap_detector_config_defaults(ref c, (uint)sizeof(DetectorConfig)));
+                return c;
             }
         }
     }
@@ -189,7 +260,7 @@ namespace Octocap
 
     /// <summary>octocap_detect_info_t.</summary>
     [StructLayout(LayoutKind.Sequential)]
-    public unsafe struct DetectInfo
+    public struct DetectInfo
     {
         public uint StructSize;
         public float TotalMs;
@@ -198,7 +269,7 @@ namespace Octocap
         public uint Inferences;
         public Layout Layout;
         public uint KeypointCount;
-        public fixed byte Model[32];
+        public Name32 Model;
     }
 
     /// <summary>octocap_subscriber_config_t. Start from <see cref="SubscriberConfig.Default"/>.</summary>
@@ -216,10 +287,16 @@ namespace Octocap
         {
             get
             {
-                SubscriberConfig c;
-                NativeMethods.octocap_subscriber_config_init(out c);
+                var c = new SubscriberConfig();
+                OctocapException.Check(NativeMethods.octocap_subscriber_config_defaults(ref c, (uint)sizeof(SubscriberConfig)));
                 return c;
             }
+        }
+
+        /// <summary>The DDS topic base name (UTF-8, at most 31 bytes).</summary>
+        public void SetTopic(string topic)
+        {
+            fixed (byte* t = Topic) NativeMethods.CopyUtf8(topic, t, 32, "topic");
         }
     }
 
@@ -253,15 +330,28 @@ namespace Octocap
         [DllImport(Lib)] internal static extern IntPtr octocap_layout_keypoint_name(Layout layout, uint index);
         [DllImport(Lib)] internal static extern Result octocap_bone_info(uint bone, out BoneInfo info);
 
-        [DllImport(Lib)] internal static extern Result octocap_calibration_load(string path, out CalibrationHandle calib);
+        [DllImport(Lib)] internal static extern Result octocap_calibration_load(byte[] path, out CalibrationHandle calib);
         [DllImport(Lib)] internal static extern Result octocap_calibration_create(CameraData* cameras, uint count, out CalibrationHandle calib);
-        [DllImport(Lib)] internal static extern Result octocap_calibration_save(CalibrationHandle calib, string path);
+        [DllImport(Lib)] internal static extern Result octocap_calibration_save(CalibrationHandle calib, byte[] path);
         [DllImport(Lib)] internal static extern Result octocap_calibration_camera_count(CalibrationHandle calib, out uint count);
         [DllImport(Lib)] internal static extern Result octocap_calibration_get_camera(CalibrationHandle calib, uint index, out CameraData camera);
         [DllImport(Lib)] internal static extern Result octocap_calibration_project(CalibrationHandle calib, uint index, double* world, double* pixel);
         [DllImport(Lib)] internal static extern void octocap_calibration_destroy(IntPtr calib);
 
-        [DllImport(Lib)] internal static extern void octocap_session_config_init(out SessionConfig cfg);
+        [DllImport(Lib)] internal static extern uint octocap_version_number();
+        [DllImport(Lib)] internal static extern Result octocap_session_config_defaults(ref SessionConfig cfg, uint structSize);
+        [DllImport(Lib)] internal static extern Result octocap_detector_config_defaults(ref DetectorConfig cfg, uint structSize);
+        [DllImport(Lib)] internal static extern Result octocap_session_set_detector(SessionHandle s, ref DetectorConfig cfg);
+        [DllImport(Lib)] internal static extern Result octocap_session_get_frame(SessionHandle s, out FrameHandle frame);
+        [DllImport(Lib)] internal static extern Result octocap_frame_get_summary(FrameHandle f, ref FrameSummary summary);
+        [DllImport(Lib)] internal static extern Result octocap_frame_get_person(FrameHandle f, uint person, ref Person p);
+        [DllImport(Lib)] internal static extern Result octocap_frame_get_keypoints3d(FrameHandle f, uint person, Joint* joints, uint capacity, out uint count);
+        [DllImport(Lib)] internal static extern Result octocap_frame_get_joints(FrameHandle f, uint person, Joint* joints, uint capacity, out uint count);
+        [DllImport(Lib)] internal static extern Result octocap_frame_get_bones(FrameHandle f, uint person, CoordFrame frame, BonePose* bones, uint capacity, out uint count);
+        [DllImport(Lib)] internal static extern Result octocap_frame_get_person_views(FrameHandle f, uint person, int* views, uint capacity, out uint count);
+        [DllImport(Lib)] internal static extern void octocap_frame_release(IntPtr frame);
+        [DllImport(Lib)] internal static extern Result octocap_motion_get_frame(MotionHandle motion, uint index, out FrameHandle frame);
+        [DllImport(Lib)] internal static extern Result octocap_subscriber_take_frame(SubscriberHandle sub, int timeoutMs, out FrameHandle frame);
         [DllImport(Lib)] internal static extern Result octocap_session_create(ref SessionConfig cfg, CalibrationHandle calib, out SessionHandle session);
         [DllImport(Lib)] internal static extern void octocap_session_destroy(IntPtr session);
         [DllImport(Lib)] internal static extern Result octocap_session_solve_keypoints(SessionHandle s, Keypoint2D* keypoints, uint* peoplePerView, uint viewCount, long timestampUs);
@@ -281,9 +371,9 @@ namespace Octocap
         [DllImport(Lib)] internal static extern Result octocap_session_get_bones(SessionHandle s, CoordFrame frame, BonePose* bones, uint capacity, out uint count);
         [DllImport(Lib)] internal static extern Result octocap_session_definition_counter(SessionHandle s, out uint counter);
 
-        [DllImport(Lib)] internal static extern Result octocap_recording_open(string directory, Layout layout, out RecordingHandle rec);
+        [DllImport(Lib)] internal static extern Result octocap_recording_open(byte[] directory, Layout layout, out RecordingHandle rec);
         [DllImport(Lib)] internal static extern void octocap_recording_destroy(IntPtr rec);
-        [DllImport(Lib)] internal static extern Result octocap_motion_open(string path, out MotionHandle motion);
+        [DllImport(Lib)] internal static extern Result octocap_motion_open(byte[] path, out MotionHandle motion);
         [DllImport(Lib)] internal static extern void octocap_motion_destroy(IntPtr motion);
         [DllImport(Lib)] internal static extern Result octocap_motion_info(MotionHandle motion, out uint frameCount, out double rateHz);
         [DllImport(Lib)] internal static extern Result octocap_motion_joints(MotionHandle motion, uint frame, Joint* output, uint capacity, out uint count);
@@ -293,7 +383,7 @@ namespace Octocap
         [DllImport(Lib)] internal static extern Result octocap_recording_layout(RecordingHandle rec, out Layout layout);
         [DllImport(Lib)] internal static extern Result octocap_recording_read_frame(RecordingHandle rec, uint frame, Keypoint2D* keypoints, uint capacity, out uint keypointCount, uint* peoplePerView, uint viewCount);
 
-        [DllImport(Lib)] internal static extern void octocap_subscriber_config_init(out SubscriberConfig cfg);
+        [DllImport(Lib)] internal static extern Result octocap_subscriber_config_defaults(ref SubscriberConfig cfg, uint structSize);
         [DllImport(Lib)] internal static extern Result octocap_subscriber_create(ref SubscriberConfig cfg, out SubscriberHandle sub);
         [DllImport(Lib)] internal static extern void octocap_subscriber_destroy(IntPtr sub);
         [DllImport(Lib)] internal static extern Result octocap_subscriber_take(SubscriberHandle sub, int timeoutMs);
@@ -303,6 +393,32 @@ namespace Octocap
         [DllImport(Lib)] internal static extern Result octocap_subscriber_get_joints(SubscriberHandle sub, Joint* joints, uint capacity, out uint count);
         [DllImport(Lib)] internal static extern Result octocap_subscriber_get_bones(SubscriberHandle sub, CoordFrame frame, BonePose* bones, uint capacity, out uint count);
 
-        internal static string Utf8(IntPtr p) => p == IntPtr.Zero ? null : Marshal.PtrToStringAnsi(p);
+        // Strings cross the boundary as UTF-8 both ways (never the platform's ANSI code page: Windows paths with
+        // non-ASCII names must reach the library intact).
+        internal static string Utf8(IntPtr p, int max = int.MaxValue)
+        {
+            if (p == IntPtr.Zero) return null;
+            byte* b = (byte*)p;
+            int n = 0;
+            while (n < max && b[n] != 0) ++n;
+            return System.Text.Encoding.UTF8.GetString(b, n);
+        }
+
+        internal static byte[] Utf8Z(string s)
+        {
+            if (s == null) throw new ArgumentNullException(nameof(s));
+            int n = System.Text.Encoding.UTF8.GetByteCount(s);
+            var bytes = new byte[n + 1];
+            System.Text.Encoding.UTF8.GetBytes(s, 0, s.Length, bytes, 0);
+            return bytes;
+        }
+
+        internal static void CopyUtf8(string s, byte* dst, int capacity, string what)
+        {
+            byte[] utf8 = System.Text.Encoding.UTF8.GetBytes(s ?? "");
+            if (utf8.Length >= capacity)
+                throw new ArgumentException(what + " is longer than " + (capacity - 1) + " UTF-8 bytes", nameof(s));
+            for (int i = 0; i < capacity; ++i) dst[i] = i < utf8.Length ? utf8[i] : (byte)0;
+        }
     }
 }

@@ -9,10 +9,12 @@ namespace Octocap
 
         public OctocapException(Result result, string message) : base(message + " (" + result + ")") { Result = result; }
 
-        /// <summary>Throws for any result but Ok, with the message the library left on this thread.</summary>
-        internal static void Check(Result r)
+        /// <summary>Throws for an error (a negative result), with the message the library left on this thread; returns
+        /// Ok and the statuses (NoPerson, Timeout), which are normal outcomes.</summary>
+        internal static Result Check(Result r)
         {
-            if (r != Result.Ok) throw new OctocapException(r, NativeMethods.Utf8(NativeMethods.octocap_last_error()));
+            if ((int)r < 0) throw new OctocapException(r, NativeMethods.Utf8(NativeMethods.octocap_last_error()));
+            return r;
         }
     }
 }

@@ -13,7 +13,7 @@ namespace Octocap
 
         public Recording(string directory, Layout layout = Layout.Auto)
         {
-            OctocapException.Check(NativeMethods.octocap_recording_open(directory, layout, out _handle));
+            OctocapException.Check(NativeMethods.octocap_recording_open(NativeMethods.Utf8Z(directory), layout, out _handle));
             uint v, f;
             Layout l;
             OctocapException.Check(NativeMethods.octocap_recording_view_count(_handle, out v));

@@ -3,9 +3,10 @@ using System.Runtime.InteropServices;
 
 namespace Octocap
 {
-    /// <summary>A capture session: 2D keypoints of N views in, 3D keypoints, joints and bone rotations out.
-    /// One thread at a time; no allocation per frame in Solve or the Get* calls.</summary>
-    public sealed class Session : IDisposable
+    /// <summary>A capture session: 2D keypoints (or images) of N views in, frames of 3D people out.
+    /// One thread at a time. Solve returns <see cref="Result.Ok"/> or <see cref="Result.NoPerson"/> (a normal outcome)
+    /// and throws only for errors.</summary>
+    public sealed class Session : IDisposable, IFrameSource
     {
         internal readonly SessionHandle Handle;
         public int KeypointCount { get; }
@@ -20,33 +21,57 @@ namespace Octocap
         }
 
         /// <summary>One person per view: <paramref name="keypoints"/> holds viewCount x KeypointCount keypoints.</summary>
-        public unsafe void Solve(ReadOnlySpan<Keypoint2D> keypoints, int viewCount, long timestampUs)
+        public unsafe Result Solve(ReadOnlySpan<Keypoint2D> keypoints, int viewCount, long timestampUs)
         {
+            if (viewCount < 0) throw new ArgumentOutOfRangeException(nameof(viewCount));
             if (keypoints.Length < viewCount * KeypointCount)
-                throw new OctocapException(Result.InvalidArgument, "keypoints holds " + keypoints.Length + ", " +
-                                           viewCount + " views need " + viewCount * KeypointCount);
+                throw new ArgumentException("keypoints holds " + keypoints.Length + ", " + viewCount + " views need " +
+                                            viewCount * KeypointCount, nameof(keypoints));
             fixed (Keypoint2D* p = &MemoryMarshal.GetReference(keypoints))
-                OctocapException.Check(NativeMethods.octocap_session_solve_keypoints(Handle, p, null, (uint)viewCount, timestampUs));
+                return OctocapException.Check(NativeMethods.octocap_session_solve_keypoints(Handle, p, null, (uint)viewCount, timestampUs));
         }
 
         /// <summary>Several people per view: for each view its people, one after the other.</summary>
-        public unsafe void Solve(ReadOnlySpan<Keypoint2D> keypoints, ReadOnlySpan<uint> peoplePerView, long timestampUs)
+        public unsafe Result Solve(ReadOnlySpan<Keypoint2D> keypoints, ReadOnlySpan<uint> peoplePerView, long timestampUs)
         {
             long needed = 0;
             foreach (uint n in peoplePerView) needed += n * (long)KeypointCount;
             if (keypoints.Length < needed)
-                throw new OctocapException(Result.InvalidArgument, "keypoints holds " + keypoints.Length + ", the people need " + needed);
+                throw new ArgumentException("keypoints holds " + keypoints.Length + ", the people need " + needed, nameof(keypoints));
             fixed (Keypoint2D* p = &MemoryMarshal.GetReference(keypoints))
             fixed (uint* ppv = &MemoryMarshal.GetReference(peoplePerView))
-                OctocapException.Check(NativeMethods.octocap_session_solve_keypoints(Handle, p, ppv, (uint)peoplePerView.Length, timestampUs));
+                return OctocapException.Check(NativeMethods.octocap_session_solve_keypoints(Handle, p, ppv, (uint)peoplePerView.Length, timestampUs));
         }
 
-        /// <summary>Solves one frame from camera images (calibration order): the config's detector, then the 3D solve.
+        /// <summary>The detector SolveImages uses (loaded now; without this call the default one is loaded on the
+        /// first SolveImages).</summary>
+        public void SetDetector(DetectorConfig config) =>
+            OctocapException.Check(NativeMethods.octocap_session_set_detector(Handle, ref config));
+
+        /// <summary>The last solved frame (dispose it). Throws NoResult before the first solve.</summary>
+        public Frame GetFrame()
+        {
+            FrameHandle f;
+            OctocapException.Check(NativeMethods.octocap_session_get_frame(Handle, out f));
+            return new Frame(f);
+        }
+
+        /// <summary>The last solved frame, or null before the first solve.</summary>
+        public Frame TryGetFrame()
+        {
+            FrameHandle f;
+            Result r = NativeMethods.octocap_session_get_frame(Handle, out f);
+            if (r == Result.NoResult) return null;
+            OctocapException.Check(r);
+            return new Frame(f);
+        }
+
+        /// <summary>Solves one frame from camera images (calibration order): the detector, then the 3D solve.
         /// Pixels must stay pinned for the call (e.g. Unity's NativeArray, or a fixed byte[]).</summary>
-        public unsafe void SolveImages(ReadOnlySpan<Image> images, long timestampUs)
+        public unsafe Result SolveImages(ReadOnlySpan<Image> images, long timestampUs)
         {
             fixed (Image* p = &MemoryMarshal.GetReference(images))
-                OctocapException.Check(NativeMethods.octocap_session_solve_images(Handle, p, (uint)images.Length, timestampUs));
+                return OctocapException.Check(NativeMethods.octocap_session_solve_images(Handle, p, (uint)images.Length, timestampUs));
         }
 
         /// <summary>The 2D keypoints the detector kept in <paramref name="view"/> last frame (people one after the

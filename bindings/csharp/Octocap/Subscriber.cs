@@ -4,7 +4,7 @@ using System.Runtime.InteropServices;
 namespace Octocap
 {
     /// <summary>Receives skeletons streamed over DDS by a session elsewhere; queried like a local session.</summary>
-    public sealed class Subscriber : IDisposable
+    public sealed class Subscriber : IDisposable, IFrameSource
     {
         readonly SubscriberHandle _handle;
 
@@ -12,6 +12,18 @@ namespace Octocap
         {
             OctocapException.Check(NativeMethods.octocap_subscriber_create(ref config, out _handle));
         }
+
+        /// <summary>The next received frame, waiting up to <paramref name="timeoutMs"/>; null when none came in time.</summary>
+        public Frame TakeFrame(int timeoutMs)
+        {
+            FrameHandle f;
+            if (OctocapException.Check(NativeMethods.octocap_subscriber_take_frame(_handle, timeoutMs, out f)) == Result.Timeout)
+                return null;
+            return new Frame(f);
+        }
+
+        /// <summary>The next frame already received, or null (never waits).</summary>
+        public Frame TryGetFrame() => TakeFrame(0);
 
         /// <summary>Takes the next pose, waiting up to <paramref name="timeoutMs"/>; false when none came.</summary>
         public bool Take(int timeoutMs)

@@ -24,15 +24,42 @@ namespace Octocap.Tests
                 var e = Assert.Throws<OctocapException>(() => session.Solve(kps, 4, 0));
                 Assert.AreEqual(Result.CameraMismatch, e.Result);
                 StringAssert.Contains("5 cameras", e.Message);
-                e = Assert.Throws<OctocapException>(() => session.Solve(kps, 5, 0));  // too short for 5 views
-                Assert.AreEqual(Result.InvalidArgument, e.Result);
+                // A managed argument error is an ArgumentException, before any native call.
+                Assert.Throws<ArgumentException>(() => session.Solve(kps, 5, 0));  // too short for 5 views
                 e = Assert.Throws<OctocapException>(() => session.GetKeypoints3D(new Joint[25]));
                 Assert.AreEqual(Result.NoResult, e.Result);
+                Assert.IsNull(session.TryGetFrame(), "no frame before the first solve");
                 var nan = new Keypoint2D[25 * 5];
                 for (int i = 0; i < nan.Length; ++i) nan[i] = new Keypoint2D(float.NaN, float.NaN, 0.9f);
-                e = Assert.Throws<OctocapException>(() => session.Solve(nan, 5, 0));
-                Assert.AreEqual(Result.NotEnoughViews, e.Result);
+                // Nobody seen is a normal outcome: a status, not an exception, and a frame with no person.
+                Assert.AreEqual(Result.NoPerson, session.Solve(nan, 5, 0));
+                using (Frame frame = session.GetFrame())
+                {
+                    Assert.AreEqual(0, frame.PersonCount);
+                    Assert.AreEqual(Result.InvalidArgument,
+                                    Assert.Throws<OctocapException>(() => frame.GetJoints(0, new Joint[15])).Result);
+                    Assert.Throws<ArgumentOutOfRangeException>(() => frame.GetJoints(-1, new Joint[15]));
+                }
             }
+        }
+
+        /// <summary>Paths cross the boundary as UTF-8: a calibration saved under a non-ASCII name loads back.</summary>
+        [Test]
+        public void NonAsciiPathsRoundTrip()
+        {
+            string dir = TestEnv.TempFile("kalibrierung-ñ-日本");
+            System.IO.Directory.CreateDirectory(dir);
+            string path = dir + "/größe-カメラ.toml";
+            try
+            {
+                using (var calib = Calibration.Load(TestEnv.Sample + "/calibration.toml"))
+                {
+                    calib.Save(path);
+                    Assert.IsTrue(System.IO.File.Exists(path), "the file has its UTF-8 name on disk");
+                    using (var back = Calibration.Load(path)) Assert.AreEqual(calib.CameraCount, back.CameraCount);
+                }
+            }
+            finally { System.IO.Directory.Delete(dir, true); }
         }
 
         [Test]

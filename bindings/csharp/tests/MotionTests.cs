@@ -35,5 +35,45 @@ namespace Octocap.Tests
             var missing = Assert.Throws<OctocapException>(() => new Motion("/nonexistent.bvh"));
             Assert.AreEqual(Result.Io, missing.Result);
         }
+
+        /// <summary>A motion's frames are the same frame type as a session's: the frame family gives exactly what the
+        /// 0.x per-motion queries give, and the engine-free driver step reads them.</summary>
+        [Test]
+        public unsafe void MotionFramesAreFrames()
+        {
+            using (var motion = new Motion("/usr/share/assimp/models/BVH/01_01.bvh"))
+            using (Frame frame = motion.GetFrame(700))
+            {
+                FrameSummary s = frame.Summary;
+                Assert.AreEqual(700, s.FrameIndex);
+                Assert.AreEqual(1u, s.PersonCount);
+                Assert.AreEqual(1u, s.JointsInRigFrame);
+                Assert.AreNotEqual(0u, s.DefinitionCounter);
+                Assert.AreEqual(1u, frame.GetPerson(0).Id);
+                Assert.AreEqual((uint)JointId.Count, frame.GetPerson(0).JointsSolved);
+                var a = new BonePose[(int)BoneId.Count];
+                var b = new BonePose[(int)BoneId.Count];
+                frame.GetBones(0, CoordFrame.Godot, a);
+                motion.GetBones(700, CoordFrame.Godot, b);
+                fixed (BonePose* pa = a)
+                fixed (BonePose* pb = b)
+                    for (int i = 0; i < a.Length * sizeof(BonePose); ++i) Assert.AreEqual(((byte*)pa)[i], ((byte*)pb)[i]);
+                var source = new OneFrame(motion, 700);
+                var c = new BonePose[(int)BoneId.Count];
+                Assert.IsTrue(Octocap.Avatar.FrameReader.TryReadBones(source, 0, CoordFrame.Godot, c));
+                Assert.AreEqual(a[(int)BoneId.RUpperArm].GlobalRotation.X, c[(int)BoneId.RUpperArm].GlobalRotation.X);
+                Assert.IsFalse(Octocap.Avatar.FrameReader.TryReadBones(source, 1, CoordFrame.Godot, c), "no second person");
+                Assert.Throws<ArgumentException>(() => Octocap.Avatar.FrameReader.TryReadBones(source, 0, CoordFrame.Godot, new BonePose[3]));
+                Assert.Throws<ArgumentOutOfRangeException>(() => motion.GetFrame(-1));
+            }
+        }
+
+        sealed class OneFrame : IFrameSource
+        {
+            readonly Motion _motion;
+            readonly int _index;
+            public OneFrame(Motion motion, int index) { _motion = motion; _index = index; }
+            public Frame TryGetFrame() => _motion.GetFrame(_index);
+        }
     }
 }

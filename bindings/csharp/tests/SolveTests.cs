@@ -83,8 +83,10 @@ namespace Octocap.Tests
         [Test]
         public void LibraryFacts()
         {
-            Library.CheckAbi();
+            Library.CheckVersion();
             StringAssert.Contains(".", Library.Version);
+            Assert.GreaterOrEqual(Library.VersionNumber, Library.BindingsVersionNumber);
+            Assert.AreEqual(Library.BindingsVersionNumber / 10000, Library.VersionNumber / 10000);
             Assert.AreEqual(25, Library.KeypointCount(Layout.Body25B));
             Assert.AreEqual("Head", Library.KeypointName(Layout.Body25B, 18));
             Assert.AreEqual("l_lower_arm", Library.BoneName(BoneId.LLowerArm));

@@ -46,15 +46,30 @@ namespace Octocap.Tests
                         rec.ReadFrame(f, kps, people);
                         session.Solve(kps, people, f * 33333L);
                         session.FlushStream();
-                        Assert.IsTrue(sub.Take(5000), "frame " + f + " did not arrive");
-                        Assert.AreEqual(f, sub.FrameInfo.FrameIndex);
-                        session.GetKeypoints3D(mine);
-                        sub.GetKeypoints3D(theirs);
-                        fixed (Joint* a = mine)
-                        fixed (Joint* b = theirs)
-                            for (int i = 0; i < 25 * Marshal.SizeOf(typeof(Joint)); ++i)
-                                Assert.AreEqual(((byte*)a)[i], ((byte*)b)[i]);
+                        using (Frame local = session.GetFrame())
+                        using (Frame received = sub.TakeFrame(5000))
+                        {
+                            Assert.IsNotNull(received, "frame " + f + " did not arrive");
+                            Assert.AreEqual(f, received.Summary.FrameIndex);
+                            Assert.AreEqual(1, received.PersonCount);
+                            Assert.AreEqual(local.GetPerson(0).KeypointsSolved, received.GetPerson(0).KeypointsSolved);
+                            // The same frame read from either source, through the one frame family, is the same bytes;
+                            // so is the session's deprecated 0.x query.
+                            local.GetKeypoints3D(0, mine);
+                            received.GetKeypoints3D(0, theirs);
+                            var old = new Joint[25];
+                            session.GetKeypoints3D(old);
+                            fixed (Joint* a = mine)
+                            fixed (Joint* b = theirs)
+                            fixed (Joint* c = old)
+                                for (int i = 0; i < 25 * Marshal.SizeOf(typeof(Joint)); ++i)
+                                {
+                                    Assert.AreEqual(((byte*)a)[i], ((byte*)b)[i]);
+                                    Assert.AreEqual(((byte*)a)[i], ((byte*)c)[i]);
+                                }
+                        }
                     }
+                    Assert.IsNull(sub.TakeFrame(50), "nothing more was sent: a timeout is null, not an exception");
                     Assert.AreEqual(30ul, sub.StreamInfo.FramesReceived);
                     Assert.AreEqual(0ul, sub.StreamInfo.FramesLost);
                     Assert.AreEqual(Layout.Body25, sub.StreamInfo.Layout);

@@ -18,7 +18,8 @@ namespace Octocap.Tests
             { "octocap_camera_t", typeof(CameraData) }, { "octocap_session_config_t", typeof(SessionConfig) },
             { "octocap_subscriber_config_t", typeof(SubscriberConfig) }, { "octocap_stream_info_t", typeof(StreamInfo) },
             { "octocap_detector_config_t", typeof(DetectorConfig) }, { "octocap_image_t", typeof(Image) },
-            { "octocap_detect_info_t", typeof(DetectInfo) },
+            { "octocap_detect_info_t", typeof(DetectInfo) }, { "octocap_frame_summary_t", typeof(FrameSummary) },
+            { "octocap_person_t", typeof(Person) },
         };
 
         static string Pascal(string snake)

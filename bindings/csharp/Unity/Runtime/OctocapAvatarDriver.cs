@@ -12,9 +12,12 @@ public sealed class OctocapAvatarDriver : MonoBehaviour
     public bool driveRootPosition = true;
     public Vector3 rootOffset = Vector3.zero;
 
-    /// <summary>The session whose last frame drives the avatar (a local session fed by your detector, or one
-    /// fed from a stream). The driver only reads it.</summary>
-    public Session Session { get; set; }
+    /// <summary>Which person of each frame drives this avatar (0: the first; several avatars can share a source).</summary>
+    public int personIndex = 0;
+
+    /// <summary>Where frames come from: a local Session (fed by your detector or OctocapCameraRig) or a Subscriber
+    /// (a stream from another machine). The driver only reads it.</summary>
+    public IFrameSource Source { get; set; }
 
     readonly AvatarRetargeter _retargeter = new AvatarRetargeter();
     readonly BonePose[] _bones = new BonePose[(int)BoneId.Count];
@@ -22,7 +25,7 @@ public sealed class OctocapAvatarDriver : MonoBehaviour
 
     void Awake()
     {
-        Library.CheckAbi();
+        Library.CheckVersion();
         var animator = GetComponent<Animator>();
         _targets = new Transform[(int)BoneId.Count];
         for (int b = 0; b < _targets.Length; ++b)
@@ -46,18 +49,17 @@ public sealed class OctocapAvatarDriver : MonoBehaviour
         _retargeter.CalibrateTPose(rest, present);
     }
 
-    unsafe void LateUpdate()
+    void LateUpdate()
     {
-        if (Session == null || !_retargeter.IsCalibrated) return;
-        try { Session.GetBones(CoordFrame.Unity, _bones); }
-        catch (OctocapException) { return; }  // nothing solved yet
+        if (Source == null || !_retargeter.IsCalibrated) return;
+        if (!FrameReader.TryReadBones(Source, personIndex, CoordFrame.Unity, _bones)) return;  // nobody yet: hold the pose
         _retargeter.Smoothing = smoothing;
         Quat[] world = _retargeter.Update(_bones);
         for (int b = 0; b < _targets.Length; ++b)
             if (_targets[b] != null && _retargeter.Drives((BoneId)b)) _targets[b].rotation = ToUnity(world[b]);
         BonePose root = _bones[(int)BoneId.Root];
         if (driveRootPosition && root.Valid != 0 && _targets[0] != null)
-            _targets[0].position = new Vector3(root.HeadPosition[0], root.HeadPosition[1], root.HeadPosition[2]) + rootOffset;
+            _targets[0].position = new Vector3(root.HeadPosition.X, root.HeadPosition.Y, root.HeadPosition.Z) + rootOffset;
     }
 
     static Quaternion ToUnity(Quat q) => new Quaternion(q.X, q.Y, q.Z, q.W);

@@ -28,18 +28,20 @@ public sealed class OctocapCameraRig : MonoBehaviour
 
     void Start()
     {
-        Library.CheckAbi();
+        Library.CheckVersion();
         _calibration = Calibration.Load(calibrationPath);
         if (_calibration.CameraCount != deviceNames.Length)
             throw new OctocapException(Result.CameraMismatch, "the calibration has " + _calibration.CameraCount +
                                        " cameras, " + deviceNames.Length + " webcams are configured");
         SessionConfig cfg = SessionConfig.Default;
         cfg.Layout = Layout.Coco17;  // the shipped models' layout
-        cfg.Detector.SetModel(model);
-        cfg.Detector.Mode = mode;
-        cfg.Detector.Threads = (uint)Math.Max(0, detectorThreads);
         Session = new Session(cfg, _calibration);
-        if (avatar != null) avatar.Session = Session;
+        DetectorConfig detector = DetectorConfig.Default;
+        detector.SetModel(model);
+        detector.Mode = mode;
+        detector.Threads = (uint)Math.Max(0, detectorThreads);
+        Session.SetDetector(detector);
+        if (avatar != null) avatar.Source = Session;
         _cams = new WebCamTexture[deviceNames.Length];
         _pixels = new Color32[deviceNames.Length][];
         _topDown = new byte[deviceNames.Length][];
@@ -77,8 +79,8 @@ public sealed class OctocapCameraRig : MonoBehaviour
                 images[i] = new Image { Pixels = pins[i].AddrOfPinnedObject(), Width = (uint)w, Height = (uint)h,
                                         StrideBytes = (uint)(w * 4), Format = PixelFormat.Rgba8 };
             }
-            try { Session.SolveImages(images, (long)(Time.timeAsDouble * 1e6)); }
-            catch (OctocapException e) when (e.Result == Result.NotEnoughViews) { }  // nobody in view: keep going
+            // Ok or NoPerson (nobody in view: a normal outcome); errors throw.
+            Session.SolveImages(images, (long)(Time.timeAsDouble * 1e6));
         }
         finally
         {

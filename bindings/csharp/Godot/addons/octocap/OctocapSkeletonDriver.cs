@@ -11,7 +11,11 @@ public partial class OctocapSkeletonDriver : Node3D
     /// <summary>Skeleton bone name per octocap bone (BoneId order); empty = Godot's humanoid profile names.</summary>
     [Export] public string[] BoneNameOverrides = new string[0];
 
-    public Session Session { get; set; }
+    /// <summary>Which person of each frame drives this skeleton (0: the first).</summary>
+    [Export] public int PersonIndex = 0;
+
+    /// <summary>Where frames come from: a Session or a Subscriber; the driver only reads it.</summary>
+    public IFrameSource Source { get; set; }
 
     readonly AvatarRetargeter _retargeter = new AvatarRetargeter();
     readonly BonePose[] _bones = new BonePose[(int)BoneId.Count];
@@ -20,7 +24,7 @@ public partial class OctocapSkeletonDriver : Node3D
 
     public override void _Ready()
     {
-        Library.CheckAbi();
+        Library.CheckVersion();
         _skeleton = GetNode<Skeleton3D>(SkeletonPath);
         _index = new int[(int)BoneId.Count];
         for (int b = 0; b < _index.Length; ++b)
@@ -45,9 +49,8 @@ public partial class OctocapSkeletonDriver : Node3D
 
     public override void _Process(double delta)
     {
-        if (Session == null || !_retargeter.IsCalibrated) return;
-        try { Session.GetBones(CoordFrame.Godot, _bones); }
-        catch (OctocapException) { return; }
+        if (Source == null || !_retargeter.IsCalibrated) return;
+        if (!FrameReader.TryReadBones(Source, PersonIndex, CoordFrame.Godot, _bones)) return;  // nobody yet: hold the pose
         _retargeter.Smoothing = Smoothing;
         Quat[] world = _retargeter.Update(_bones);
         // Parents come before children in BoneId order, so each parent's new global pose is already set.
