@@ -89,21 +89,38 @@ Reference solve_here() {
 }
 
 // Takes one frame and checks it equals the reference, byte for byte.
+// Through the frame family, and through the deprecated per-subscriber queries of the same current frame.
 int64_t take_and_compare(octocap_subscriber_t* sub, const Reference& ref, int timeout_ms) {
-  if (octocap_subscriber_take(sub, timeout_ms) != OCTOCAP_OK) return -1;
-  octocap_frame_info_t info;
-  REQUIRE(octocap_subscriber_get_frame_info(sub, &info) == OCTOCAP_OK);
-  REQUIRE(info.frame_index >= 0);
-  REQUIRE(static_cast<size_t>(info.frame_index) < ref.keypoints.size());
-  std::vector<octocap_joint_t> k(25);
-  std::vector<octocap_bone_pose_t> b(OCTOCAP_BONE_COUNT);
+  octocap_frame_t* frame = nullptr;
+  const octocap_result_t r = octocap_subscriber_take_frame(sub, timeout_ms, &frame);
+  if (r == OCTOCAP_STATUS_TIMEOUT) {
+    REQUIRE(frame == nullptr);
+    return -1;
+  }
+  REQUIRE(r == OCTOCAP_OK);
+  octocap_frame_summary_t s{};
+  s.struct_size = sizeof s;
+  REQUIRE(octocap_frame_get_summary(frame, &s) == OCTOCAP_OK);
+  REQUIRE(s.frame_index >= 0);
+  REQUIRE(static_cast<size_t>(s.frame_index) < ref.keypoints.size());
+  REQUIRE(s.person_count == 1);
+  REQUIRE(s.source_id == 1);  // the publisher's default id
+  REQUIRE(s.definition_counter != 0);
+  REQUIRE(s.layout == OCTOCAP_LAYOUT_BODY_25);
+  std::vector<octocap_joint_t> k(25), k_old(25);
+  std::vector<octocap_bone_pose_t> b(OCTOCAP_BONE_COUNT), b_old(OCTOCAP_BONE_COUNT);
   uint32_t n = 0;
-  REQUIRE(octocap_subscriber_get_keypoints3d(sub, k.data(), 25, &n) == OCTOCAP_OK);
+  REQUIRE(octocap_frame_get_keypoints3d(frame, 0, k.data(), 25, &n) == OCTOCAP_OK);
   REQUIRE(n == 25);
-  REQUIRE(octocap_subscriber_get_bones(sub, OCTOCAP_FRAME_RIG, b.data(), OCTOCAP_BONE_COUNT, &n) == OCTOCAP_OK);
-  REQUIRE(std::memcmp(k.data(), ref.keypoints[info.frame_index].data(), 25 * sizeof(octocap_joint_t)) == 0);
-  REQUIRE(std::memcmp(b.data(), ref.bones[info.frame_index].data(), b.size() * sizeof(octocap_bone_pose_t)) == 0);
-  return info.frame_index;
+  REQUIRE(octocap_frame_get_bones(frame, 0, OCTOCAP_FRAME_RIG, b.data(), OCTOCAP_BONE_COUNT, &n) == OCTOCAP_OK);
+  octocap_frame_release(frame);
+  REQUIRE(octocap_subscriber_get_keypoints3d(sub, k_old.data(), 25, &n) == OCTOCAP_OK);
+  REQUIRE(octocap_subscriber_get_bones(sub, OCTOCAP_FRAME_RIG, b_old.data(), OCTOCAP_BONE_COUNT, &n) == OCTOCAP_OK);
+  REQUIRE(std::memcmp(k.data(), ref.keypoints[s.frame_index].data(), 25 * sizeof(octocap_joint_t)) == 0);
+  REQUIRE(std::memcmp(b.data(), ref.bones[s.frame_index].data(), b.size() * sizeof(octocap_bone_pose_t)) == 0);
+  REQUIRE(std::memcmp(k.data(), k_old.data(), 25 * sizeof(octocap_joint_t)) == 0);
+  REQUIRE(std::memcmp(b.data(), b_old.data(), b.size() * sizeof(octocap_bone_pose_t)) == 0);
+  return s.frame_index;
 }
 
 // Takes one frame; returns its frame number, -1 on timeout.
@@ -214,7 +231,10 @@ TEST_CASE("samples of another wire version are rejected with a log message", "[s
     pose.version = octocap_wire_VERSION;  // right version, but no keypoints / joints / bones
     pose.frame_number = 1;
     REQUIRE(dds_write(w, &pose) == DDS_RETCODE_OK);
-    REQUIRE(octocap_subscriber_take(sub.get(), 1500) == OCTOCAP_ERROR_NO_RESULT);
+    REQUIRE(octocap_subscriber_take(sub.get(), 1500) == OCTOCAP_ERROR_NO_RESULT);  // 0.x: an error code
+    octocap_frame_t* frame = reinterpret_cast<octocap_frame_t*>(0x1);
+    REQUIRE(octocap_subscriber_take_frame(sub.get(), 100, &frame) == OCTOCAP_STATUS_TIMEOUT);  // 1.0: a status
+    REQUIRE(frame == nullptr);
   }
   octocap_set_log_callback(nullptr, OCTOCAP_LOG_DEBUG, nullptr);
   octocap_stream_info_t info;
