@@ -1,4 +1,5 @@
 // octocap-calibrate: intrinsics from checkerboard images, extrinsics from a person walking through the volume.
+#include <cmath>
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
@@ -104,7 +105,20 @@ int run_extrinsics(const std::string& in, const std::string& keypoints, double h
     };
     opt.distance_camera_a = index_of(distance.substr(0, c1));
     opt.distance_camera_b = index_of(distance.substr(c1 + 1, c2 - c1 - 1));
-    opt.camera_distance_m = std::stof(distance.substr(c2 + 1));
+    const std::string metres = distance.substr(c2 + 1);
+    char* end = nullptr;
+    const double d = std::strtod(metres.c_str(), &end);
+    if (metres.empty() || *end != '\0' || !std::isfinite(d) || !(d > 0) || d > 1e4) {
+      std::fprintf(stderr, "octocap-calibrate: --camera-distance: '%s' is not a distance in metres (CAM_A:CAM_B:METRES)\n",
+                   metres.c_str());
+      return 2;
+    }
+    if (opt.distance_camera_a < 0 || opt.distance_camera_b < 0) {
+      std::fprintf(stderr, "octocap-calibrate: --camera-distance: no camera named '%s'\n",
+                   (opt.distance_camera_a < 0 ? distance.substr(0, c1) : distance.substr(c1 + 1, c2 - c1 - 1)).c_str());
+      return 2;
+    }
+    opt.camera_distance_m = static_cast<float>(d);
   }
   octocap_calibration_t* out = nullptr;
   octocap_calibration_report_t rep;
@@ -169,10 +183,16 @@ int main(int argc, char** argv) {
   refine->add_option("--output", output, "Calibration TOML to write")->required();
   for (CLI::App* sub : {intr, extr, refine}) sub->add_option("--yaml", g_yaml, "Also write the calibration as OpenCV YAML");
   CLI11_PARSE(app, argc, argv);
-  if (intr->parsed()) return run_intrinsics(images, board, output, report_dir);
-  if (extr->parsed() && keypoints.empty() && g_boards.empty()) {
-    std::fprintf(stderr, "octocap-calibrate extrinsics: give --keypoints DIR (a person) or --boards DIR --board SPEC\n");
-    return 2;
+  // Whatever the file system says (a --report path that is a file, a full disk) is an error message, never an abort.
+  try {
+    if (intr->parsed()) return run_intrinsics(images, board, output, report_dir);
+    if (extr->parsed() && keypoints.empty() && g_boards.empty()) {
+      std::fprintf(stderr, "octocap-calibrate extrinsics: give --keypoints DIR (a person) or --boards DIR --board SPEC\n");
+      return 2;
+    }
+    return run_extrinsics(in, keypoints, height, distance, up, output, refine->parsed());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "octocap-calibrate: error: %s\n", e.what());
+    return 1;
   }
-  return run_extrinsics(in, keypoints, height, distance, up, output, refine->parsed());
 }

@@ -231,7 +231,10 @@ int solve(const SolveOptions& o) {
               frames_multi);
   std::printf("  keypoints solved:     %zu / %zu (%.1f%%)\n", solved_keypoints, static_cast<size_t>(done) * K,
               done ? 100.0 * solved_keypoints / (static_cast<double>(done) * K) : 0.0);
-  std::printf("  reprojection error:   mean %.2f px, median %.2f px\n", mean_err, median(errors));
+  if (errors.empty())
+    std::printf("  reprojection error:   n/a (no keypoint solved)\n");
+  else
+    std::printf("  reprojection error:   mean %.2f px, median %.2f px\n", mean_err, median(errors));
   std::printf("  3D solve time:        %.3f ms/frame; end to end (JSON parsing included) %.2f ms/frame, %.0f frames/s%s\n",
               done ? solve_ms / done : 0.0, done ? total_ms / done : 0.0,
               total_ms > 0 ? done * 1000.0 / total_ms : 0.0,
@@ -255,6 +258,10 @@ int solve(const SolveOptions& o) {
   }
   std::printf("  wrote %s%s%s%s%s\n", o.output.c_str(), o.csv.empty() ? "" : ", ", o.csv.c_str(),
               o.bvh.empty() ? "" : ", ", o.bvh.c_str());
+  if (frames_with_result == 0) {
+    std::fprintf(stderr, "octocap solve: no frame could be solved (no person seen by enough views)\n");
+    return 3;
+  }
   return 0;
 }
 

@@ -30,7 +30,8 @@ const DictName kDictionaries[] = {{"DICT_4X4_50", cv::aruco::DICT_4X4_50},     {
                                   {"DICT_7X7_250", cv::aruco::DICT_7X7_250}};
 
 BoardSpec parse_charuco(const std::string& spec) {
-  static const std::regex re(R"(charuco:(\d+)x(\d+):([0-9]*\.?[0-9]+):([0-9]*\.?[0-9]+)(?::(\w+))?)");
+  // Bounded repetitions: every number fits its type, and the regex engine's recursion stays shallow.
+  static const std::regex re(R"(charuco:(\d{1,4})x(\d{1,4}):([0-9]{0,6}\.?[0-9]{1,9}):([0-9]{0,6}\.?[0-9]{1,9})(?::(\w{1,32}))?)");
   std::smatch m;
   if (!std::regex_match(spec, m, re))
     throw Error(Errc::invalid_argument, "board '" + spec +
@@ -50,8 +51,11 @@ BoardSpec parse_charuco(const std::string& spec) {
 }  // namespace
 
 BoardSpec parse_board(const std::string& spec) {
-  static const std::regex re(R"(checkerboard:(\d+)x(\d+):([0-9]*\.?[0-9]+))");
+  static const std::regex re(R"(checkerboard:(\d{1,4})x(\d{1,4}):([0-9]{0,6}\.?[0-9]{1,9}))");
   std::smatch m;
+  // std::regex recurses per character: a spec of thousands of characters would overflow the stack before failing.
+  if (spec.size() > 128) throw Error(Errc::invalid_argument, "board spec is " + std::to_string(spec.size()) +
+                                                                 " characters; a board spec is at most 128");
   if (spec.rfind("charuco:", 0) == 0) return parse_charuco(spec);
   if (!std::regex_match(spec, m, re))
     throw Error(Errc::invalid_argument, "board '" + spec + "' is not checkerboard:COLSxROWS:SQUARE_M (inner corners, metres)");

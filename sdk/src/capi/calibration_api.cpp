@@ -17,7 +17,12 @@ Camera from_c(const octocap_camera_t& c, uint32_t index) {
   for (double v : c.distortion) capi::require_finite(v, (where + "distortion").c_str());
   for (double v : c.rotation) capi::require_finite(v, (where + "rotation").c_str());
   for (double v : c.translation) capi::require_finite(v, (where + "translation").c_str());
-  if (c.width == 0 || c.height == 0) throw Error(Errc::invalid_argument, where + "width and height must be > 0");
+  if (c.width == 0 || c.height == 0 || c.width > kMaxImageSide || c.height > kMaxImageSide)
+    throw Error(Errc::invalid_argument, where + "width and height must be 1 to 100000");
+  if (!plausible_rotation_vector({c.rotation[0], c.rotation[1], c.rotation[2]}))
+    throw Error(Errc::invalid_argument, where + "rotation is not a rotation (a Rodrigues vector of at most 1000 radians)");
+  for (double v : c.translation)
+    if (std::abs(v) > 1e6) throw Error(Errc::invalid_argument, where + "translation is beyond a million metres");
   if (c.matrix[0] <= 0 || c.matrix[4] <= 0) throw Error(Errc::invalid_argument, where + "focal lengths must be > 0");
   Camera cam;
   cam.name.assign(c.name, strnlen(c.name, sizeof c.name));

@@ -7,6 +7,13 @@
 
 namespace octocap {
 
+// A Rodrigues vector a calibration can mean: finite and at most 1000 radians long (beyond that the angle's last
+// digits are gone and the rotation is noise).
+inline bool plausible_rotation_vector(const Eigen::Vector3d& r) { return r.allFinite() && r.norm() <= 1000.0; }
+
+// Image sizes a camera can have (pixels, each side).
+constexpr double kMaxImageSide = 100000;
+
 struct Camera {
   std::string name;
   int width = 0;

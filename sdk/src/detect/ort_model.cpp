@@ -53,10 +53,13 @@ struct OrtModel::Impl {
 };
 
 OrtModel::OrtModel(const std::string& path, const ModelCard& card, int intra_threads)
-    : card_(card), impl_(std::make_unique<Impl>()) {
+    : card_(card) {
+  // The API first: an Impl (its Ort::Session) must never be destroyed before the API table exists, or its
+  // destructor calls through a null table (the first detector of a process, given a card without its model).
+  Ort::Env& env = ort_env();
   struct stat st {};
   if (stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) throw Error(Errc::io, "model file not found: " + path);
-  Ort::Env& env = ort_env();
+  impl_ = std::make_unique<Impl>();
   try {
     Ort::SessionOptions options;
     options.SetIntraOpNumThreads(intra_threads);

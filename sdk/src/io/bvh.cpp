@@ -1,5 +1,6 @@
 #include "io/bvh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -46,7 +47,15 @@ int channel_code(const std::string& c, Tokens& tok) {
   tok.fail("unknown channel '" + c + "'");
 }
 
-void parse_joint(Tokens& tok, BvhMotion& m, int parent, const std::string& name, int& channel_count) {
+// Real skeletons are a few dozen joints, a dozen deep; the caps turn a hostile file into a parse error, not a
+// stack overflow or an allocation of gigabytes.
+constexpr int kMaxDepth = 256;
+constexpr size_t kMaxJoints = 10000;
+constexpr double kMaxFrames = 1e7;  // 23 hours at 120 Hz
+
+void parse_joint(Tokens& tok, BvhMotion& m, int parent, const std::string& name, int& channel_count, int depth) {
+  if (depth > kMaxDepth) tok.fail("joints nested deeper than " + std::to_string(kMaxDepth));
+  if (m.joints.size() >= kMaxJoints) tok.fail("more than " + std::to_string(kMaxJoints) + " joints");
   BvhJoint j;
   j.name = name;
   j.parent = parent;
@@ -66,7 +75,7 @@ void parse_joint(Tokens& tok, BvhMotion& m, int parent, const std::string& name,
     if (t == "}") return;
     if (t == "JOINT") {
       const std::string child = tok.next();
-      parse_joint(tok, m, index, child, channel_count);
+      parse_joint(tok, m, index, child, channel_count, depth + 1);
     } else if (t == "End") {
       tok.expect("Site");
       tok.expect("{");
@@ -129,18 +138,25 @@ BvhMotion read_bvh(const std::string& path) {
   tok.expect("ROOT");
   int channels = 0;
   const std::string root = tok.next();
-  parse_joint(tok, m, -1, root, channels);
+  parse_joint(tok, m, -1, root, channels, 0);
   tok.expect("MOTION");
   tok.expect("Frames:");
   const double n = tok.number();
-  if (n < 0 || n != std::floor(n)) tok.fail("bad frame count");
+  if (n < 1 || n > kMaxFrames || n != std::floor(n))
+    tok.fail("Frames: must be a whole number from 1 to " + std::to_string(static_cast<long>(kMaxFrames)));
   tok.expect("Frame");
   tok.expect("Time:");
   m.frame_time = tok.number();
   if (!(m.frame_time > 0)) tok.fail("Frame Time must be > 0");
-  m.frames.resize(static_cast<size_t>(n), std::vector<double>(channels));
-  for (auto& f : m.frames)
-    for (auto& v : f) v = tok.number();
+  // Grown as the data is read, so a header that claims more frames than the file holds fails at its end instead
+  // of allocating them first.
+  const size_t count = static_cast<size_t>(n);
+  m.frames.reserve(std::min<size_t>(count, 4096));
+  for (size_t f = 0; f < count; ++f) {
+    std::vector<double> row(static_cast<size_t>(channels));
+    for (auto& v : row) v = tok.number();
+    m.frames.push_back(std::move(row));
+  }
   return m;
 }
 

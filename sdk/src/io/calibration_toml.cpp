@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -58,7 +59,8 @@ Camera read_camera(const TableRef& ref, const std::string& path) {
   cam.name = t["name"].value_or(ref.key);
   const auto size = numbers(t, "size", path, ref.key);
   expect_count(size, 2, "size", path, ref.key);
-  if (size[0] < 1 || size[1] < 1) fail(path, ref.key, "'size' must be positive");
+  if (!(size[0] >= 1 && size[1] >= 1 && size[0] <= kMaxImageSide && size[1] <= kMaxImageSide))
+    fail(path, ref.key, "'size' must be 1 to 100000 pixels each side");
   cam.width = static_cast<int>(std::lround(size[0]));
   cam.height = static_cast<int>(std::lround(size[1]));
   const auto m = numbers(t, "matrix", path, ref.key);
@@ -72,11 +74,33 @@ Camera read_camera(const TableRef& ref, const std::string& path) {
   std::copy(d.begin(), d.end(), cam.dist.begin());
   const auto r = numbers(t, "rotation", path, ref.key);
   expect_count(r, 3, "rotation", path, ref.key);
+  if (!plausible_rotation_vector({r[0], r[1], r[2]}))
+    fail(path, ref.key, "'rotation' is not a rotation (a Rodrigues vector of at most 1000 radians)");
   cam.R = rodrigues_to_matrix({r[0], r[1], r[2]});
   const auto tr = numbers(t, "translation", path, ref.key);
   expect_count(tr, 3, "translation", path, ref.key);
+  if (std::abs(tr[0]) > 1e6 || std::abs(tr[1]) > 1e6 || std::abs(tr[2]) > 1e6)
+    fail(path, ref.key, "'translation' is beyond a million metres");
   cam.t = {tr[0], tr[1], tr[2]};
   return cam;
+}
+
+// A TOML basic string: quotes, backslashes and control characters escaped, so any name reads back as written.
+std::string toml_string(const std::string& s) {
+  std::string out = "\"";
+  for (unsigned char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += static_cast<char>(c);
+    } else if (c < 0x20 || c == 0x7f) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      out += buf;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out + "\"";
 }
 
 std::string fmt(double v) {
@@ -121,7 +145,7 @@ void write_calibration_toml(const Calibration& calib, const std::string& path) {
     const Camera& c = calib[i];
     const Eigen::Vector3d r = matrix_to_rodrigues(c.R);
     out << "[cam_" << (i + 1) << "]\n";
-    out << "name = \"" << c.name << "\"\n";
+    out << "name = " << toml_string(c.name) << "\n";
     out << "size = [ " << fmt(c.width) << ", " << fmt(c.height) << "]\n";
     out << "matrix = [";
     for (int row = 0; row < 3; ++row)

@@ -76,6 +76,25 @@ void write_csv(const std::string& path, const MotionTrack& track) {
   if (!out) throw Error(Errc::io, path + ": write failed");
 }
 
+double parse_coordinate(const std::string& cell, const std::string& where) {
+  const char* begin = cell.c_str();
+  char* end = nullptr;
+  const double v = std::strtod(begin, &end);
+  if (end == begin || *end != '\0' || !std::isfinite(v))
+    throw Error(Errc::parse, where + ": '" + cell + "' is not a number");
+  if (std::abs(v) > 1e6) throw Error(Errc::parse, where + ": coordinate " + cell + " is out of range (|v| > 1e6)");
+  return v;
+}
+
+double parse_rate(const std::string& cell, const std::string& where) {
+  const char* begin = cell.c_str();
+  char* end = nullptr;
+  const double v = std::strtod(begin, &end);
+  if (end == begin || *end != '\0' || !std::isfinite(v) || v < 1e-3 || v > 1e5)
+    throw Error(Errc::parse, where + ": '" + cell + "' is not a frame rate (0.001 to 100000 Hz)");
+  return v;
+}
+
 MotionTrack read_trc(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw Error(Errc::io, path + ": cannot open TRC file");
@@ -91,7 +110,7 @@ MotionTrack read_trc(const std::string& path) {
   MotionTrack t;
   double scale = 1.0;
   for (size_t i = 0; i < keys.size() && i < vals.size(); ++i) {
-    if (keys[i] == "DataRate") t.rate_hz = std::atof(vals[i].c_str());
+    if (keys[i] == "DataRate") t.rate_hz = parse_rate(vals[i], path + ": DataRate");
     if (keys[i] == "Units" && vals[i] == "mm") scale = 0.001;
   }
   const auto names = split_tabs(lines[3]);
@@ -106,11 +125,9 @@ MotionTrack read_trc(const std::string& path) {
     for (size_t m = 0; m < t.markers.size(); ++m) {
       const size_t c = 2 + 3 * m;
       if (c + 2 >= cells.size() || cells[c].empty()) continue;
-      try {
-        frame[m] = Eigen::Vector3d(std::stod(cells[c]), std::stod(cells[c + 1]), std::stod(cells[c + 2])) * scale;
-      } catch (const std::exception&) {
-        throw Error(Errc::parse, path + ":" + std::to_string(li + 1) + ": non-numeric coordinate");
-      }
+      const std::string where = path + ":" + std::to_string(li + 1);
+      frame[m] = Eigen::Vector3d(parse_coordinate(cells[c], where), parse_coordinate(cells[c + 1], where),
+                                 parse_coordinate(cells[c + 2], where)) * scale;
     }
     t.frames.push_back(std::move(frame));
   }

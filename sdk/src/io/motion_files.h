@@ -23,6 +23,14 @@ void write_csv(const std::string& path, const MotionTrack& track);
 // Reads a TRC (positions as stored in the file; mm files are converted to metres).
 MotionTrack read_trc(const std::string& path);
 
+// One coordinate cell of a motion file: a finite number within a million units (metres, or the file's mm), as a
+// whole cell. Throws Error(parse) naming `where` otherwise: beyond that no capture volume exists, and the float
+// conversions downstream would turn it into infinity.
+double parse_coordinate(const std::string& cell, const std::string& where);
+
+// A file's frame rate: finite, 0.001 .. 100000 Hz. Throws Error(parse) naming `where` otherwise.
+double parse_rate(const std::string& cell, const std::string& where);
+
 // The rotation a Z-up world gets to become Y up: (x, y, z) -> (y, z, x).
 inline Eigen::Vector3d zup_to_yup(const Eigen::Vector3d& p) { return {p.y(), p.z(), p.x()}; }
 

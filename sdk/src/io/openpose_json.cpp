@@ -42,7 +42,7 @@ std::vector<Person2D> read_openpose_file(const std::string& path, size_t keypoin
   nlohmann::json doc;
   try {
     doc = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for numbers like 1e999
     throw Error(Errc::parse, path + ": malformed JSON: " + e.what());
   }
   if (!doc.is_object() || !doc.contains("people") || !doc["people"].is_array())

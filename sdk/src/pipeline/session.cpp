@@ -6,8 +6,10 @@
 
 #include "core/error.h"
 #include "io/motion_files.h"
+#ifdef OCTOCAP_HAVE_DDS
 #include "stream/dds_publisher.h"
 #include "stream/vmc_sender.h"
+#endif
 #include "solve/person_select.h"
 #include "solve/subdivision.h"
 #include "solve/triangulation.h"
@@ -41,6 +43,9 @@ void validate(const SessionConfig& c) {
   if (!(c.outlier_threshold_px > 0)) throw Error(Errc::invalid_argument, "config.outlier_threshold_px must be > 0");
   if (!(c.filter_min_cutoff > 0) || c.filter_beta < 0)
     throw Error(Errc::invalid_argument, "config.filter_min_cutoff_hz must be > 0 and filter_beta >= 0");
+  // Frame numbers count up from here; leaving room below INT64_MAX keeps every increment defined.
+  if (c.first_frame_index < 0 || c.first_frame_index > (int64_t{1} << 62))
+    throw Error(Errc::invalid_argument, "config.first_frame_index must be 0 .. 2^62");
   if (c.volume_min != c.volume_max && (c.volume_max.array() <= c.volume_min.array()).any())
     throw Error(Errc::invalid_argument, "config.volume_max must exceed volume_min on every axis");
 }
@@ -90,14 +95,14 @@ Session::Session(const SessionConfig& config, Calibration calib)
   frame_.info.frame_index = config_.first_frame_index - 1;
   if (config_.publish) {
 #ifdef OCTOCAP_HAVE_DDS
-    publisher_ = std::make_unique<DdsPublisher>(config_.stream, config_.layout, frame_.definition_counter);
+    sinks_.push_back(std::make_unique<DdsPublisher>(config_.stream, config_.layout, frame_.definition_counter));
 #else
     throw Error(Errc::unsupported, "this build of octocap has no DDS streaming (OCTOCAP_WITH_DDS=OFF)");
 #endif
   }
   if (config_.vmc_port != 0) {
 #ifdef OCTOCAP_HAVE_DDS
-    vmc_ = std::make_unique<VmcSender>(config_.vmc_host, config_.vmc_port);
+    sinks_.push_back(std::make_unique<VmcSender>(config_.vmc_host, config_.vmc_port));
 #else
     throw Error(Errc::unsupported, "this build of octocap has no VMC output (OCTOCAP_WITH_DDS=OFF)");
 #endif
@@ -107,16 +112,13 @@ Session::Session(const SessionConfig& config, Calibration calib)
 Session::~Session() = default;
 
 void Session::flush_stream() {
-#ifdef OCTOCAP_HAVE_DDS
-  if (publisher_) publisher_->flush();
-#endif
+  for (auto& sink : sinks_) sink->flush();
 }
 
 uint32_t Session::stream_readers() const {
-#ifdef OCTOCAP_HAVE_DDS
-  if (publisher_) return publisher_->matched_readers();
-#endif
-  return 0;
+  uint32_t n = 0;
+  for (const auto& sink : sinks_) n += sink->receivers();
+  return n;
 }
 
 void Session::reset() {
@@ -193,7 +195,10 @@ bool Session::solve(const std::vector<std::vector<Person2D>>& people, int64_t ti
   for (size_t v = 0; v < V; ++v)
     if (frame_.selected[v] >= 0) frame_.selected[v] = original[v][frame_.selected[v]];  // report indices into the caller's list
 
-  const double dt = has_timestamp_ ? (timestamp_us - last_timestamp_us_) * 1e-6 : 0.0;
+  // In double: the difference of two extreme int64 timestamps overflows int64.
+  const double dt = has_timestamp_
+                        ? (static_cast<double>(timestamp_us) - static_cast<double>(last_timestamp_us_)) * 1e-6
+                        : 0.0;
   has_timestamp_ = true;
   ++frame_.info.frame_index;
   solved_any_ = true;
@@ -222,7 +227,12 @@ bool Session::solve(const std::vector<std::vector<Person2D>>& people, int64_t ti
       if (!(kp.confidence >= config_.min_confidence) || !std::isfinite(kp.x) || !std::isfinite(kp.y)) continue;
       rays.push_back(make_view_ray(calib_[v], static_cast<int>(v), {kp.x, kp.y}, kp.confidence));
     }
-    frame_.keypoints[k] = solve_keypoint(rays);
+    PointResult r = solve_keypoint(rays);
+    // Never a NaN marked valid: a degenerate camera (an absurd rotation in a calibration) makes the point missing.
+    if (r.valid && (!r.position.allFinite() || !std::isfinite(r.reprojection_error_px) ||
+                    r.position.cwiseAbs().maxCoeff() > 1e6))
+      r = PointResult{};
+    frame_.keypoints[k] = r;
   });
 
   raw_previous_.assign(K, Eigen::Vector3d::Constant(std::nan("")));
@@ -248,10 +258,7 @@ bool Session::solve(const std::vector<std::vector<Person2D>>& people, int64_t ti
 }
 
 void Session::publish() {
-#ifdef OCTOCAP_HAVE_DDS
-  if (publisher_) publisher_->publish(frame_);
-  if (vmc_) vmc_->send(frame_);
-#endif
+  for (auto& sink : sinks_) sink->publish(frame_);
 }
 
 void Session::derive_skeleton() {

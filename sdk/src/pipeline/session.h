@@ -8,6 +8,7 @@
 
 #include "core/camera.h"
 #include "core/layout.h"
+#include "core/frame_sink.h"
 #include "core/parallel.h"
 #include "detect/detector.h"
 #include "core/frame.h"
@@ -51,8 +52,6 @@ struct SessionConfig {
   DetectorConfig detector;        // for solve_images() unless set_detector(); loaded on first use
 };
 
-class DdsPublisher;
-class VmcSender;
 
 
 class Session {
@@ -107,8 +106,7 @@ class Session {
   bool z_up_ = false;
   Method method_ = Method::subdivision;
   std::unique_ptr<WorkerPool> pool_;
-  std::unique_ptr<DdsPublisher> publisher_;
-  std::unique_ptr<VmcSender> vmc_;
+  std::vector<std::unique_ptr<FrameSink>> sinks_;  // DDS stream, VMC: fed every frame
 
   std::vector<Person2D> reprojected_keypoints() const;
 

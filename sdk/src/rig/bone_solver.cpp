@@ -20,7 +20,8 @@ SkeletonPose solve_bones(const SkeletonJoints& j) {
     const Eigen::Vector3d across = j[kLHip] - j[kRHip];
     Eigen::Vector3d x = across.normalized();
     Eigen::Vector3d z = x.cross(Eigen::Vector3d::UnitY());
-    if (across.norm() > 1e-6 && z.norm() > 1e-6) {
+    // Finite inputs can still overflow (coordinates near 1e308): only finite rotations are valid.
+    if (std::isfinite(across.norm()) && across.norm() > 1e-6 && z.norm() > 1e-6) {
       z.normalize();
       const Eigen::Vector3d y = z.cross(x);
       Eigen::Matrix3d R;
@@ -40,9 +41,11 @@ SkeletonPose solve_bones(const SkeletonJoints& j) {
     if (!parent.valid || !finite(j[def.head]) || !finite(j[def.tail])) continue;
     const Eigen::Vector3d d = j[def.tail] - j[def.head];
     const double len = d.norm();
-    if (len < 1e-6) continue;
+    if (!(len >= 1e-6) || !std::isfinite(len)) continue;
     const Eigen::Vector3d in_parent = parent.global.conjugate() * (d / len);
-    bone.local = Eigen::Quaterniond::FromTwoVectors(rest[b], in_parent).normalized();
+    const Eigen::Quaterniond local = Eigen::Quaterniond::FromTwoVectors(rest[b], in_parent).normalized();
+    if (!local.coeffs().allFinite()) continue;
+    bone.local = local;
     bone.global = (parent.global * bone.local).normalized();
     bone.head = j[def.head];
     bone.length = len;

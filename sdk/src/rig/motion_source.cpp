@@ -94,11 +94,8 @@ MotionTrack read_octocap_csv(const std::string& path) {
     for (size_t m = 0; m < t.markers.size(); ++m) {
       const std::string* c = &cells[1 + 3 * m];
       if (c[0].empty() || c[1].empty() || c[2].empty()) continue;
-      try {
-        f[m] = {std::stod(c[0]), std::stod(c[1]), std::stod(c[2])};
-      } catch (const std::exception&) {
-        throw Error(Errc::parse, path + ":" + std::to_string(line_no) + ": not a number");
-      }
+      const std::string where = path + ":" + std::to_string(line_no);
+      f[m] = {parse_coordinate(c[0], where), parse_coordinate(c[1], where), parse_coordinate(c[2], where)};
     }
     t.frames.push_back(std::move(f));
   }

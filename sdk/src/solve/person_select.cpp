@@ -29,15 +29,18 @@ double distance_to_pose(const Camera& cam, const Person2D& person, const std::ve
   return d.size() >= 3 ? median(d) : kInf;
 }
 
-// Per-view median reprojection error of the keypoints triangulated from the chosen people.
+// Per-view median reprojection error of the keypoints triangulated from the chosen people; `pose` (when given)
+// receives the triangulated keypoints, NaN where fewer than two views saw one.
 std::vector<double> combination_errors(const Calibration& calib, const std::vector<std::vector<Person2D>>& people,
-                                       const std::vector<int>& choice, double min_conf) {
+                                       const std::vector<int>& choice, double min_conf,
+                                       std::vector<Eigen::Vector3d>* pose = nullptr) {
   const size_t V = calib.size();
   size_t K = 0;
   for (size_t v = 0; v < V; ++v)
     if (choice[v] >= 0) K = people[v][choice[v]].size();
   std::vector<std::vector<double>> errs(V);
   std::vector<ViewRay> rays;
+  if (pose) pose->assign(K, Eigen::Vector3d::Constant(std::nan("")));
   for (size_t k = 0; k < K; ++k) {
     rays.clear();
     uint64_t mask = 0;
@@ -51,6 +54,7 @@ std::vector<double> combination_errors(const Calibration& calib, const std::vect
     if (rays.size() < 2) continue;
     Eigen::Vector3d X;
     if (!triangulate_dlt(calib, rays, mask, true, X)) continue;
+    if (pose) (*pose)[k] = X;
     for (const ViewRay& r : rays) {
       const Eigen::Vector2d p = calib[r.view].project(X);
       errs[r.view].push_back(p.allFinite() ? (p - r.pixel).norm() : 1e6);
@@ -81,6 +85,86 @@ std::vector<std::vector<int>> candidates_per_view(const std::vector<std::vector<
   return out;
 }
 
+// Search spaces above this are not enumerated: past ~12 views "person or nobody" per view is 2^V combinations.
+constexpr double kMaxCombinations = 4096;
+
+// What a choice costs: an empty view the threshold, a chosen person its reprojection error capped at twice that
+// (so agreeing views beat empty ones, and one bad view cannot dominate).
+double choice_cost(const std::vector<int>& choice, const std::vector<double>& errs, double threshold) {
+  double cost = 0;
+  for (size_t v = 0; v < choice.size(); ++v) cost += choice[v] < 0 ? threshold : std::min(errs[v], 2 * threshold);
+  return cost;
+}
+
+// Bounded search for many views, where "person or nobody" per view is 2^V combinations: every pair of views
+// whose people agree seeds a pose; each other view takes its person nearest that pose's reprojection; views
+// that then disagree are dropped; the cheapest expansion wins. Seeds already inside an expansion are skipped, so
+// about one expansion is made per distinct person. O(V^2 * keep^2) two-view triangulations, whatever V.
+std::vector<int> greedy_combination(const Calibration& calib, const std::vector<std::vector<Person2D>>& people,
+                                    const std::vector<int>& fixed, const std::vector<std::vector<int>>& cands,
+                                    const PersonSelectParams& params) {
+  const size_t V = calib.size();
+  const double thr = params.association_threshold_px;
+  auto options = [&](size_t v) { return fixed[v] >= 0 ? std::vector<int>{fixed[v]} : cands[v]; };
+  struct Seed {
+    double cost;
+    std::vector<int> choice;
+  };
+  std::vector<Seed> seeds;
+  size_t seeded = 0;
+  for (int f : fixed) seeded += f >= 0;
+  if (seeded >= 2) {
+    seeds.push_back({0, fixed});
+  } else {
+    for (size_t a = 0; a < V; ++a)
+      for (size_t b = a + 1; b < V; ++b)
+        for (int pa : options(a))
+          for (int pb : options(b)) {
+            std::vector<int> trial(V, -1);
+            trial[a] = pa;
+            trial[b] = pb;
+            const auto errs = combination_errors(calib, people, trial, params.min_confidence);
+            const double cost = std::max(errs[a], errs[b]);
+            if (cost <= thr) seeds.push_back({cost, trial});
+          }
+    std::sort(seeds.begin(), seeds.end(), [](const Seed& x, const Seed& y) { return x.cost < y.cost; });
+  }
+  constexpr size_t kMaxExpansions = 16;
+  std::vector<std::vector<int>> expanded;
+  std::vector<int> best(V, -1);
+  double best_cost = kInf;
+  for (const Seed& seed : seeds) {
+    if (expanded.size() >= kMaxExpansions) break;
+    bool inside = false;
+    for (const auto& e : expanded) {
+      bool all = true;
+      for (size_t v = 0; v < V; ++v)
+        if (seed.choice[v] >= 0 && e[v] != seed.choice[v]) all = false;
+      inside = inside || all;
+    }
+    if (inside) continue;
+    std::vector<Eigen::Vector3d> pose;
+    combination_errors(calib, people, seed.choice, params.min_confidence, &pose);
+    std::vector<int> choice = seed.choice;
+    for (size_t v = 0; v < V; ++v) {
+      if (choice[v] >= 0) continue;
+      double nearest = kInf;
+      for (int p : cands[v]) {
+        const double d = distance_to_pose(calib[v], people[v][p], pose, params.min_confidence);
+        if (d < nearest) nearest = d, choice[v] = p;
+      }
+      if (!(nearest <= 2 * thr)) choice[v] = -1;
+    }
+    const auto errs = combination_errors(calib, people, choice, params.min_confidence);
+    for (size_t v = 0; v < V; ++v)
+      if (choice[v] >= 0 && fixed[v] < 0 && errs[v] > thr) choice[v] = -1;
+    expanded.push_back(choice);
+    const double cost = choice_cost(choice, combination_errors(calib, people, choice, params.min_confidence), thr);
+    if (cost < best_cost) best_cost = cost, best = choice;
+  }
+  return best;
+}
+
 // Exhaustive search over "one person or nobody" per view for the views not yet fixed. A view left empty
 // costs the threshold; a chosen person costs its reprojection error (capped at twice the threshold), so
 // agreeing views are preferred to empty ones and a disagreeing one is dropped afterwards.
@@ -95,7 +179,9 @@ std::vector<int> best_combination(const Calibration& calib, const std::vector<st
       if (fixed[v] < 0) n *= static_cast<double>(cands[v].size() + 1);
     return n;
   };
-  while (combos() > 4096 && keep > 1) cands = candidates_per_view(people, --keep);
+  while (combos() > kMaxCombinations && keep > 1) cands = candidates_per_view(people, --keep);
+  if (combos() > kMaxCombinations)
+    return greedy_combination(calib, people, fixed, candidates_per_view(people, 2), params);
 
   std::vector<int> choice = fixed, best = fixed;
   double best_cost = kInf;
@@ -111,11 +197,8 @@ std::vector<int> best_combination(const Calibration& calib, const std::vector<st
       if (choice[v] >= 0) ++chosen;
     }
     if (chosen >= 2) {
-      const auto errs = combination_errors(calib, people, choice, params.min_confidence);
-      double cost = 0;
-      for (size_t v = 0; v < V; ++v)
-        cost += choice[v] < 0 ? params.association_threshold_px
-                              : std::min(errs[v], 2 * params.association_threshold_px);
+      const double cost = choice_cost(choice, combination_errors(calib, people, choice, params.min_confidence),
+                                      params.association_threshold_px);
       if (cost < best_cost) {
         best_cost = cost;
         best = choice;

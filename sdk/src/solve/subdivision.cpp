@@ -183,7 +183,8 @@ PointResult solve_subdivision(const Calibration& calib, const std::vector<ViewRa
       int kept = 0;
       for (const ViewRay& ray : rays) {
         if (!(mask >> ray.view & 1u)) continue;
-        if ((calib[ray.view].project(position) - ray.pixel).norm() > params.max_reprojection_error_px)
+        // Written as "not within": a NaN reprojection (a degenerate camera) rejects the view too.
+        if (!((calib[ray.view].project(position) - ray.pixel).norm() <= params.max_reprojection_error_px))
           mask &= ~(uint64_t{1} << ray.view);
         else
           ++kept;

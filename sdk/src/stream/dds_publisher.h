@@ -8,21 +8,23 @@
 #include <thread>
 
 #include "core/frame.h"
+#include "core/frame_sink.h"
 #include "stream/stream_config.h"
 
 namespace octocap {
 
-class DdsPublisher {
+class DdsPublisher : public FrameSink {
  public:
   // `definition_counter` goes out with the definition and every pose (the source's next_definition_counter()).
   DdsPublisher(const StreamConfig& config, LayoutId layout, uint32_t definition_counter = 1);
-  ~DdsPublisher();
+  ~DdsPublisher() override;
   DdsPublisher(const DdsPublisher&) = delete;
   DdsPublisher& operator=(const DdsPublisher&) = delete;
 
-  void publish(const FrameResult& frame);
+  void publish(const FrameResult& frame) override;
   // Waits until everything queued has been written (for tests and for a clean end of a recording).
-  void flush();
+  void flush() override;
+  uint32_t receivers() const override { return matched_readers(); }
   uint64_t dropped() const;
   // Readers of the pose topic currently matched (so a recorder can be waited for before a take starts).
   uint32_t matched_readers() const;

@@ -7,19 +7,21 @@
 #include <string>
 
 #include "core/frame.h"
+#include "core/frame_sink.h"
 
 namespace octocap {
 
 constexpr uint16_t kVmcDefaultPort = 39539;
 
-class VmcSender {
+class VmcSender : public FrameSink {
  public:
   VmcSender(const std::string& host, uint16_t port);
-  ~VmcSender();
+  ~VmcSender() override;
   VmcSender(const VmcSender&) = delete;
   VmcSender& operator=(const VmcSender&) = delete;
   // Sends the frame; a bone octocap could not solve is left out, so receivers keep its last pose.
   void send(const FrameResult& frame);
+  void publish(const FrameResult& frame) override { send(frame); }
 
  private:
   struct Impl;

@@ -130,6 +130,10 @@ bool read_pose(const octocap_wire_Pose& in, LayoutId layout_id, FrameResult& out
     p.length = s.length_m;
     p.valid = s.valid != 0;
   }
+  if (in.frame_number > (uint64_t{1} << 62)) {
+    why = "frame number " + std::to_string(in.frame_number) + " is out of range";
+    return false;
+  }
   out.info.frame_index = static_cast<int64_t>(in.frame_number);
   out.info.timestamp_us = in.timestamp_us;
   out.info.keypoints_solved = solved;
