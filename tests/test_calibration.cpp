@@ -394,6 +394,7 @@ TEST_CASE("real keypoints of a person give the lab's camera layout", "[calib][re
   CHECK(rep.points > 1000);
 }
 
+#ifdef OCTOCAP_HAVE_ONNXRUNTIME  // needs the detector
 TEST_CASE("markerless end to end: the lab's cameras from their own videos, through octocap's detector", "[calib][real]") {
   // Pose2Sim's 4 videos -> octocap detect (MoveNet, crops) -> extrinsics from the person -> the Qualisys layout.
   testing::TempDir dir;
@@ -408,3 +409,5 @@ TEST_CASE("markerless end to end: the lab's cameras from their own videos, throu
   CHECK(worst < 0.15);
   CHECK(rep.final_rms_px < 10);
 }
+#endif
+

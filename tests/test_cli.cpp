@@ -131,6 +131,7 @@ TEST_CASE("octocap-calibrate refuses what it cannot do, saying why", "[cli][cali
   REQUIRE_THAT(r.output, ContainsSubstring("intrinsics") && ContainsSubstring("extrinsics"));
 }
 
+#ifdef OCTOCAP_HAVE_ONNXRUNTIME  // needs the detector
 TEST_CASE("octocap detect writes OpenPose JSON per camera that octocap reads back", "[cli]") {
   testing::TempDir dir;
   // Two "cameras", one real photo each: the street scene and the portrait.
@@ -155,3 +156,5 @@ TEST_CASE("octocap detect writes OpenPose JSON per camera that octocap reads bac
   CHECK(bad.status != 0);
   CHECK_THAT(bad.output, ContainsSubstring("none"));
 }
+#endif
+
