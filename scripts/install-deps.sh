@@ -24,7 +24,8 @@ $SUDO apt-get install -y -q --no-install-recommends \
   assimp-testmodels python3 python3-pip python3-venv \
   mono-devel nunit-console libnunit-cil-dev \
   cyclonedds-dev cyclonedds-tools liblo-dev \
-  libassimp-dev libosmesa6-dev libglfw3-dev xvfb xauth
+  libassimp-dev libosmesa6-dev libglfw3-dev xvfb xauth \
+  clang-14 libclang-rt-14-dev
 $SUDO apt-get install -y -q --no-install-recommends -t bookworm-backports libcatch2-dev
 # Node.js + npm convert the shipped pose models (scripts/fetch-models.sh); keep a Node.js already installed.
 if ! command -v npm >/dev/null 2>&1; then

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (fuzz/) with clang under ASan + UBSan, in the smallest configuration (no DDS, no
+# ONNX Runtime, no viewer): its test suite runs first, then every target for a bounded time from its committed
+# corpus (fuzz/corpus/<target>, never modified here). A crash, leak, UB report or timeout fails the script and
+# leaves the input in build-fuzz/crashes/. Usage: scripts/fuzz.sh [SECONDS_PER_TARGET] (default 20)
+set -euo pipefail
+source "$(dirname "$0")/common.sh"
+SECONDS_PER_TARGET="${1:-20}"
+DIR="${OCTOCAP_FUZZ_BUILD_DIR:-$ROOT/build-fuzz}"
+CC_BIN="$(command -v clang-14 || command -v clang)"
+CXX_BIN="$(command -v clang++-14 || command -v clang++)"
+if [ ! -f "$DIR/build.ninja" ]; then
+  CC="$CC_BIN" CXX="$CXX_BIN" cmake -S "$ROOT" -B "$DIR" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1" -DOCTOCAP_FUZZ=ON \
+    -DOCTOCAP_WITH_DDS=OFF -DOCTOCAP_WITH_ONNX=OFF -DOCTOCAP_WITH_VIEWER=OFF -DOCTOCAP_BENCH=OFF >/dev/null
+fi
+cmake --build "$DIR" -j "$JOBS"
+echo "== tests of the minimal configuration (no DDS, no ONNX Runtime), clang + ASan + UBSan"
+(cd "$DIR" && ctest --output-on-failure -j "$JOBS")
+mkdir -p "$DIR/crashes"
+for target in calibration openpose_json motion model_card board_spec solve; do
+  work="$(mktemp -d)"
+  echo "== fuzz_$target for ${SECONDS_PER_TARGET} s"
+  "$DIR/fuzz/fuzz_$target" -max_total_time="$SECONDS_PER_TARGET" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
+    -print_final_stats=1 -artifact_prefix="$DIR/crashes/fuzz_${target}-" "$work" "$ROOT/fuzz/corpus/$target" 2>&1 |
+    grep -E "^(#[0-9]+ +DONE|stat::number_of_executed_units|==[0-9]+==ERROR|SUMMARY|artifact_prefix|Test unit written)" || true
+  status=${PIPESTATUS[0]}
+  rm -rf "$work"
+  [ "$status" = 0 ] || { echo "fuzz_$target found a crash (see $DIR/crashes/)"; exit 1; }
+done
+echo "== fuzzing done: no crash in ${SECONDS_PER_TARGET} s per target"
