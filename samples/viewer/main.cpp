@@ -10,7 +10,6 @@
 #include <stdexcept>
 
 #include "gltf_export.h"
-#include "check.h"
 #include "offscreen.h"
 #include "scene.h"
 #include "window.h"
@@ -43,28 +42,19 @@ Eigen::Matrix3d rig_to_world(bool z_up) {
 }
 
 std::vector<NamedCamera> calibrated_cameras(const Options& o, int width, bool& z_up) {
-  octocap_calibration_t* calib = nullptr;
-  check(octocap_calibration_load(o.calibration.c_str(), &calib), "loading the calibration");
-  std::unique_ptr<octocap_calibration_t, void (*)(octocap_calibration_t*)> owner(calib, octocap_calibration_destroy);
+  const octocap::Calibration calib = octocap::Calibration::load(o.calibration);
   if (o.up == "auto") {
     // The same up-axis decision a session makes from the cameras.
     octocap_session_config_t cfg;
     octocap_session_config_init(&cfg);
-    octocap_session_t* s = nullptr;
-    check(octocap_session_create(&cfg, calib, &s), "reading the calibration's up axis");
-    octocap_up_axis_t up = OCTOCAP_UP_Y;
-    octocap_session_up_axis(s, &up);
-    octocap_session_destroy(s);
-    z_up = up == OCTOCAP_UP_Z;
+    z_up = octocap::Session(cfg, calib).up_axis() == OCTOCAP_UP_Z;
   } else {
     z_up = o.up == "z";
   }
-  uint32_t count = 0;
-  check(octocap_calibration_camera_count(calib, &count), "cameras");
+  const uint32_t count = calib.camera_count();
   std::vector<NamedCamera> out;
   for (uint32_t i = 0; i < count; ++i) {
-    octocap_camera_t c;
-    check(octocap_calibration_get_camera(calib, i, &c), "camera");
+    const octocap_camera_t c = calib.camera(i);
     if (!o.all_cameras && o.camera != c.name) continue;
     Eigen::Matrix3d K;
     for (int k = 0; k < 9; ++k) K(k / 3, k % 3) = c.matrix[k];
@@ -118,7 +108,7 @@ int run(const Options& o) {
   so.bone_map = o.bone_map;
   so.skinning = o.skinning == "dqs" ? SkinningMethod::dual_quaternion : SkinningMethod::linear;
   so.skeleton_overlay = o.skeleton;
-  std::unique_ptr<octocap_subscriber_t, void (*)(octocap_subscriber_t*)> subscriber(nullptr, octocap_subscriber_destroy);
+  std::unique_ptr<octocap::Subscriber> subscriber;
   if (o.subscribe) {
     octocap_subscriber_config_t sc;
     octocap_subscriber_config_init(&sc);
@@ -126,9 +116,7 @@ int run(const Options& o) {
     sc.qos = o.qos == "record" ? OCTOCAP_QOS_RECORD : OCTOCAP_QOS_LIVE;
     sc.source_id = o.source_id;
     std::snprintf(sc.topic, sizeof sc.topic, "%s", o.topic.c_str());
-    octocap_subscriber_t* raw = nullptr;
-    check(octocap_subscriber_create(&sc, &raw), "subscribing");
-    subscriber.reset(raw);
+    subscriber = std::make_unique<octocap::Subscriber>(sc);
   }
   Scene scene = o.subscribe ? Scene(subscriber.get(), so) : Scene(o.motion, so);
   std::string mapped;

@@ -5,7 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "check.h"
+#include "octocap/octocap.hpp"
 
 namespace {
 
@@ -21,16 +21,13 @@ void Scene::load_model() {
   skinned_.resize(character_.meshes.size());
 }
 
-Scene::Scene(octocap_subscriber_t* live, const SceneOptions& options) : live_(live), options_(options) { load_model(); }
+Scene::Scene(octocap::Subscriber* live, const SceneOptions& options) : live_(live), options_(options) { load_model(); }
 
 bool Scene::take_live(int timeout_ms) {
   if (!live_) throw std::runtime_error("not a live scene");
-  const octocap_result_t r = octocap_subscriber_take(live_, timeout_ms);
-  if (r == OCTOCAP_ERROR_NO_RESULT) return false;
-  check(r, "receiving a pose");
-  octocap_bone_pose_t bones[OCTOCAP_BONE_COUNT];
-  uint32_t n = 0;
-  check(octocap_subscriber_get_bones(live_, OCTOCAP_FRAME_RIG, bones, OCTOCAP_BONE_COUNT, &n), "bones");
+  const std::optional<octocap::Frame> frame = live_->take(timeout_ms);
+  if (!frame || frame->person_count() == 0) return false;
+  const std::vector<octocap_bone_pose_t> bones = frame->bones(0, OCTOCAP_FRAME_RIG);
   if (scale_ <= 0 && bones[OCTOCAP_BONE_L_UPPER_LEG].valid && bones[OCTOCAP_BONE_L_LOWER_LEG].valid) {
     // Live: the first frame with a leg sets the scale and the floor (below its lowest joint).
     scale_ = (bones[OCTOCAP_BONE_L_UPPER_LEG].length_m + bones[OCTOCAP_BONE_L_LOWER_LEG].length_m) /
@@ -41,15 +38,14 @@ bool Scene::take_live(int timeout_ms) {
     floor_y_ = lowest - 0.5f;  // the lowest bone head is a knee: the floor is about half a metre below
   }
   if (scale_ <= 0) return false;
-  pose_bones(bones);
+  pose_bones(bones.data());
   return true;
 }
 
 Scene::Scene(const std::string& motion_path, const SceneOptions& options) : options_(options) {
-  octocap_motion_t* m = nullptr;
-  check(octocap_motion_open(motion_path.c_str(), &m), "opening the motion");
-  motion_.reset(m);
-  check(octocap_motion_info(m, &frames_, &rate_hz_), "motion info");
+  motion_ = std::make_unique<octocap::Motion>(motion_path);
+  frames_ = motion_->frame_count();
+  rate_hz_ = motion_->rate_hz();
   load_model();
 
   // One scale for the whole take (the median leg), and the floor and centre the cameras look at.
@@ -57,13 +53,12 @@ Scene::Scene(const std::string& motion_path, const SceneOptions& options) : opti
   float lowest = std::numeric_limits<float>::infinity();
   Eigen::Vector3f sum = Eigen::Vector3f::Zero();
   int roots = 0;
-  octocap_bone_pose_t bones[OCTOCAP_BONE_COUNT];
-  octocap_joint_t joints[OCTOCAP_JOINT_COUNT];
-  uint32_t n = 0;
   const uint32_t step = std::max(1u, frames_ / 200);
   for (uint32_t f = 0; f < frames_; f += step) {
-    check(octocap_motion_bones(m, f, OCTOCAP_FRAME_RIG, bones, OCTOCAP_BONE_COUNT, &n), "bones");
-    check(octocap_motion_joints(m, f, joints, OCTOCAP_JOINT_COUNT, &n), "joints");
+    const octocap::Frame frame = motion_->frame(f);
+    if (frame.person_count() == 0) continue;
+    const std::vector<octocap_bone_pose_t> bones = frame.bones(0, OCTOCAP_FRAME_RIG);
+    const std::vector<octocap_joint_t> joints = frame.joints(0);
     if (bones[OCTOCAP_BONE_L_UPPER_LEG].valid && bones[OCTOCAP_BONE_L_LOWER_LEG].valid)
       legs.push_back(bones[OCTOCAP_BONE_L_UPPER_LEG].length_m + bones[OCTOCAP_BONE_L_LOWER_LEG].length_m);
     for (const auto& j : joints)
@@ -87,11 +82,10 @@ std::vector<const SkinnedMesh*> Scene::meshes() const {
 
 void Scene::pose(int frame) {
   if (!motion_) throw std::runtime_error("a live scene is posed by take_live()");
-  octocap_bone_pose_t bones[OCTOCAP_BONE_COUNT];
-  uint32_t n = 0;
   const uint32_t f = static_cast<uint32_t>(std::clamp(frame, 0, static_cast<int>(frames_) - 1));
-  check(octocap_motion_bones(motion_.get(), f, OCTOCAP_FRAME_RIG, bones, OCTOCAP_BONE_COUNT, &n), "bones");
-  pose_bones(bones);
+  const octocap::Frame posed = motion_->frame(f);
+  if (posed.person_count() == 0) return;  // a frame of the file with no joints: keep the last pose
+  pose_bones(posed.bones(0, OCTOCAP_FRAME_RIG).data());
 }
 
 void Scene::pose_bones(const octocap_bone_pose_t* bones) {

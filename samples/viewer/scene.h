@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "character.h"
-#include "octocap/octocap.h"
+#include "octocap/octocap.hpp"
 #include "renderer.h"
 #include "retarget.h"
 #include "skinning.h"
@@ -23,7 +23,7 @@ class Scene {
   // Throws std::runtime_error with the library's or assimp's message.
   Scene(const std::string& motion_path, const SceneOptions& options);
   // A live scene: poses arrive over DDS from `live` (not owned), through take_live().
-  Scene(octocap_subscriber_t* live, const SceneOptions& options);
+  Scene(octocap::Subscriber* live, const SceneOptions& options);
   ~Scene();
 
   int frame_count() const { return static_cast<int>(frames_); }
@@ -50,14 +50,11 @@ class Scene {
   const std::array<Eigen::Vector3f, OCTOCAP_JOINT_COUNT>& character_joints() const { return joints_; }
 
  private:
-  struct MotionDeleter {
-    void operator()(octocap_motion_t* m) const { octocap_motion_destroy(m); }
-  };
   void load_model();
   void pose_bones(const octocap_bone_pose_t* bones);
 
-  std::unique_ptr<octocap_motion_t, MotionDeleter> motion_;
-  octocap_subscriber_t* live_ = nullptr;
+  std::unique_ptr<octocap::Motion> motion_;
+  octocap::Subscriber* live_ = nullptr;
   bool posed_ = false;
   uint32_t frames_ = 0;
   double rate_hz_ = 30;

@@ -5,10 +5,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "octocap/octocap.h"
+#include "octocap/octocap.hpp"
 
 namespace fs = std::filesystem;
 
@@ -74,13 +75,11 @@ int run_intrinsics(const std::string& images, const std::string& board, const st
 
 int run_extrinsics(const std::string& in, const std::string& keypoints, double height, const std::string& distance,
                    const std::string& up, const std::string& output, bool refine) {
-  octocap_calibration_t* intr = nullptr;
-  if (octocap_calibration_load(in.c_str(), &intr) != OCTOCAP_OK) return fail(in);
-  std::unique_ptr<octocap_calibration_t, void (*)(octocap_calibration_t*)> intr_guard(intr, octocap_calibration_destroy);
-  octocap_recording_t* rec = nullptr;
-  if (g_boards.empty() && octocap_recording_open(keypoints.c_str(), OCTOCAP_LAYOUT_AUTO, &rec) != OCTOCAP_OK)
-    return fail(keypoints);
-  std::unique_ptr<octocap_recording_t, void (*)(octocap_recording_t*)> rec_guard(rec, octocap_recording_destroy);
+  const octocap::Calibration intrinsics = octocap::Calibration::load(in);
+  const octocap_calibration_t* intr = intrinsics.get();
+  std::optional<octocap::Recording> recording;
+  if (g_boards.empty()) recording.emplace(keypoints, OCTOCAP_LAYOUT_AUTO);
+  octocap_recording_t* rec = recording ? recording->get() : nullptr;
   octocap_extrinsics_options_t opt;
   octocap_extrinsics_options_init(&opt);
   opt.person_height_m = static_cast<float>(height);
@@ -120,17 +119,19 @@ int run_extrinsics(const std::string& in, const std::string& keypoints, double h
     }
     opt.camera_distance_m = static_cast<float>(d);
   }
-  octocap_calibration_t* out = nullptr;
+  octocap_calibration_t* raw = nullptr;
   octocap_calibration_report_t rep;
   if (!g_boards.empty()) {
     std::fprintf(stderr, "solving extrinsics from boards in %s (PnP per view, bundle adjustment)...\n", g_boards.c_str());
-    if (octocap_calibration_solve_extrinsics_boards(intr, g_boards.c_str(), g_board.c_str(), &opt, &out, &rep) != OCTOCAP_OK)
-      return fail("extrinsics");
+    octocap::check(octocap_calibration_solve_extrinsics_boards(intr, g_boards.c_str(), g_board.c_str(), &opt, &raw, &rep),
+                   "extrinsics");
   } else {
     std::fprintf(stderr, "solving extrinsics from %s (pairwise essential matrix, PnP, bundle adjustment)...\n",
                  keypoints.c_str());
-    if (octocap_calibration_solve_extrinsics(intr, rec, &opt, &out, &rep) != OCTOCAP_OK) return fail("extrinsics");
+    octocap::check(octocap_calibration_solve_extrinsics(intr, rec, &opt, &raw, &rep), "extrinsics");
   }
+  const octocap::Calibration result(raw);
+  const octocap_calibration_t* out = result.get();
   const int saved = save(out, output);
   std::printf("%-16s %12s %9s %24s\n", "camera", "observations", "RMS px", "centre (m)");
   for (uint32_t i = 0; i < rep.camera_count; ++i) {
@@ -140,7 +141,6 @@ int run_extrinsics(const std::string& in, const std::string& keypoints, double h
   }
   std::printf("bundle adjustment: %u points, %u iterations, RMS %.2f -> %.2f px\n", rep.points, rep.iterations,
               rep.initial_rms_px, rep.final_rms_px);
-  octocap_calibration_destroy(out);
   if (saved != 0) return saved;
   std::printf("wrote %s\n", output.c_str());
   return 0;

@@ -16,11 +16,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-using octocap::check;
-
-struct DetectorDeleter {
-  void operator()(octocap_detector_t* d) const { octocap_detector_destroy(d); }
-};
 
 // OpenPose's own JSON (version 1.3), one file per camera and frame, as octocap solve --keypoints and Pose2Sim read.
 void write_openpose(const fs::path& path, const std::vector<std::vector<octocap_keypoint2d_t>>& people) {
@@ -44,35 +39,29 @@ void write_openpose(const fs::path& path, const std::vector<std::vector<octocap_
 int detect(const DetectOptions& o) {
   ImageSource source(o.images);
   const octocap_detector_config_t cfg = o.detector.config();
-  octocap_detector_t* raw = nullptr;
-  check(octocap_detector_create(&cfg, &raw), "loading the model");
-  std::unique_ptr<octocap_detector_t, DetectorDeleter> detector(raw);
+  octocap::Detector detector(cfg);
   const size_t frames = o.max_frames ? std::min<size_t>(o.max_frames, source.frame_count()) : source.frame_count();
   const auto& names = source.camera_names();
   for (const auto& n : names) fs::create_directories(fs::path(o.output) / (n + "_json"));
   if (!o.debug_images.empty()) fs::create_directories(o.debug_images);
   octocap_detect_info_t info{};
-  info.struct_size = sizeof info;
   double total_ms = 0, inference_ms = 0;
   size_t found = 0;
   for (size_t f = 0; f < frames; ++f) {
     std::vector<cv::Mat> images = source.read(f);
     std::vector<octocap_image_t> views;
     for (const cv::Mat& m : images) views.push_back(as_image(m));
-    check(octocap_detector_run(detector.get(), views.data(), static_cast<uint32_t>(views.size())), "detecting");
-    check(octocap_detector_info(detector.get(), &info), "detect info");
+    detector.run(views.data(), static_cast<uint32_t>(views.size()));
+    info = detector.info();
     total_ms += info.total_ms;
     inference_ms += info.inference_ms;
     for (size_t v = 0; v < views.size(); ++v) {
-      uint32_t count = 0;
-      check(octocap_detector_people(detector.get(), static_cast<uint32_t>(v), &count), "people");
-      std::vector<std::vector<octocap_keypoint2d_t>> people(count, std::vector<octocap_keypoint2d_t>(info.keypoint_count));
+      const uint32_t count = detector.people(static_cast<uint32_t>(v));
+      std::vector<std::vector<octocap_keypoint2d_t>> people;
       std::vector<octocap_keypoint2d_t> flat;
       for (uint32_t p = 0; p < count; ++p) {
-        uint32_t n = 0;
-        check(octocap_detector_keypoints(detector.get(), static_cast<uint32_t>(v), p, people[p].data(),
-                                         info.keypoint_count, &n), "keypoints");
-        flat.insert(flat.end(), people[p].begin(), people[p].end());
+        people.push_back(detector.keypoints(static_cast<uint32_t>(v), p));
+        flat.insert(flat.end(), people.back().begin(), people.back().end());
       }
       found += count > 0;
       char file[160];
