@@ -22,6 +22,20 @@ bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
 }
 
+// The built-in sample: its calibration, its recording, and one frame of its keypoints at a time.
+struct Sample {
+  octocap::Calibration calib = octocap::Calibration::load(kSample + "/calibration.toml");
+  octocap::Recording rec{kSample + "/keypoints"};
+  std::vector<octocap_keypoint2d_t> kps;
+  std::vector<uint32_t> people;
+  uint32_t views() const { return rec.view_count(); }
+  void read(uint32_t frame) { rec.read_frame(frame, kps, people); }
+  octocap_result_t solve(octocap::Session& s, uint32_t frame, int64_t t_us) {
+    read(frame);
+    return s.solve_keypoints(kps.data(), people.data(), views(), t_us);
+  }
+};
+
 octocap_session_config_t body25_config() {
   octocap_session_config_t cfg;
   octocap_session_config_init(&cfg);
@@ -32,15 +46,11 @@ octocap_session_config_t body25_config() {
 }  // namespace
 
 TEST_CASE("session frames read through the frame family give exactly the 0.x queries' bytes", "[frames]") {
-  const octocap::Calibration calib = octocap::Calibration::load(kSample + "/calibration.toml");
-  octocap::Recording rec(kSample + "/keypoints");
-  octocap::Session session(body25_config(), calib);
-  std::vector<octocap_keypoint2d_t> kps;
-  std::vector<uint32_t> people;
+  Sample sample;
+  octocap::Session session(body25_config(), sample.calib);
   std::vector<octocap::Frame> kept;
   for (uint32_t f = 0; f < 10; ++f) {
-    rec.read_frame(f, kps, people);
-    REQUIRE(session.solve_keypoints(kps.data(), people.data(), rec.view_count(), f * 33333) == OCTOCAP_OK);
+    REQUIRE(sample.solve(session, f, f * 33333) == OCTOCAP_OK);
     octocap::Frame frame = session.frame();
     const octocap_frame_summary_t s = frame.summary();
     CHECK(s.frame_index == f);
@@ -87,19 +97,15 @@ TEST_CASE("session frames read through the frame family give exactly the 0.x que
 }
 
 TEST_CASE("a frame outlives its session, and every frame query refuses what it cannot answer", "[frames][misuse]") {
-  const octocap::Calibration calib = octocap::Calibration::load(kSample + "/calibration.toml");
-  octocap::Recording rec(kSample + "/keypoints");
-  std::vector<octocap_keypoint2d_t> kps;
-  std::vector<uint32_t> people;
-  rec.read_frame(0, kps, people);
+  Sample sample;
   octocap_frame_t* frame = nullptr;
   std::vector<octocap_joint_t> before;
   {
-    octocap::Session session(body25_config(), calib);
+    octocap::Session session(body25_config(), sample.calib);
     octocap_frame_t* none = reinterpret_cast<octocap_frame_t*>(0x1);
     CHECK(octocap_session_get_frame(session.get(), &none) == OCTOCAP_ERROR_NO_RESULT);
     CHECK(none == nullptr);
-    session.solve_keypoints(kps.data(), people.data(), rec.view_count(), 0);
+    sample.solve(session, 0, 0);
     REQUIRE(octocap_session_get_frame(session.get(), &frame) == OCTOCAP_OK);
     before.assign(25, octocap_joint_t{});
     uint32_t n = 0;
@@ -132,13 +138,9 @@ TEST_CASE("a frame outlives its session, and every frame query refuses what it c
 }
 
 TEST_CASE("a newer caller's bigger output struct is filled to what the library knows, never past it", "[frames]") {
-  const octocap::Calibration calib = octocap::Calibration::load(kSample + "/calibration.toml");
-  octocap::Recording rec(kSample + "/keypoints");
-  octocap::Session session(body25_config(), calib);
-  std::vector<octocap_keypoint2d_t> kps;
-  std::vector<uint32_t> people;
-  rec.read_frame(0, kps, people);
-  session.solve_keypoints(kps.data(), people.data(), rec.view_count(), 0);
+  Sample sample;
+  octocap::Session session(body25_config(), sample.calib);
+  sample.solve(session, 0, 0);
   const octocap::Frame frame = session.frame();
   struct Bigger {
     octocap_frame_summary_t known;
@@ -208,22 +210,18 @@ TEST_CASE("versions: header and library agree, every released struct size gets i
 }
 
 TEST_CASE("the definition counter differs between sources and is never 0", "[frames]") {
-  const octocap::Calibration calib = octocap::Calibration::load(kSample + "/calibration.toml");
-  octocap::Recording rec(kSample + "/keypoints");
-  std::vector<octocap_keypoint2d_t> kps;
-  std::vector<uint32_t> people;
-  rec.read_frame(0, kps, people);
-  octocap::Session a(body25_config(), calib);
+  Sample sample;
+  octocap::Session a(body25_config(), sample.calib);
   octocap_session_config_t coco = body25_config();
   coco.layout = OCTOCAP_LAYOUT_COCO_17;
-  octocap::Session b(coco, calib);
-  a.solve_keypoints(kps.data(), people.data(), rec.view_count(), 0);
+  octocap::Session b(coco, sample.calib);
+  sample.solve(a, 0, 0);
   const uint32_t ca = a.frame().summary().definition_counter;
-  a.solve_keypoints(kps.data(), people.data(), rec.view_count(), 33333);
+  sample.solve(a, 1, 33333);
   CHECK(a.frame().summary().definition_counter == ca);  // same source, same definition
   std::vector<octocap_keypoint2d_t> none;
-  std::vector<uint32_t> zero(rec.view_count(), 0);
-  CHECK(b.solve_keypoints(none.data(), zero.data(), rec.view_count(), 0) == OCTOCAP_STATUS_NO_PERSON);
+  std::vector<uint32_t> zero(sample.views(), 0);
+  CHECK(b.solve_keypoints(none.data(), zero.data(), sample.views(), 0) == OCTOCAP_STATUS_NO_PERSON);
   const uint32_t cb = b.frame().summary().definition_counter;
   CHECK(ca != 0);
   CHECK(cb != 0);
@@ -264,9 +262,8 @@ TEST_CASE("motion frames are frames: joints in the rig frame, bones as the 0.x m
 }
 
 TEST_CASE("a motion writer that is discarded writes nothing; a closed one writes what its frames held", "[frames]") {
-  const octocap::Calibration calib = octocap::Calibration::load(kSample + "/calibration.toml");
-  octocap::Recording rec(kSample + "/keypoints");
-  octocap::Session session(body25_config(), calib);
+  Sample sample;
+  octocap::Session session(body25_config(), sample.calib);
   const std::string tmp = std::filesystem::temp_directory_path().string();
   const std::string kept = tmp + "/octocap-test-kept.csv";
   const std::string dropped = tmp + "/octocap-test-dropped.csv";
@@ -275,11 +272,8 @@ TEST_CASE("a motion writer that is discarded writes nothing; a closed one writes
   {
     octocap::MotionWriter good(kept, OCTOCAP_MOTION_CSV, OCTOCAP_LAYOUT_BODY_25, OCTOCAP_UP_Y, 30);
     octocap::MotionWriter bad(dropped, OCTOCAP_MOTION_CSV, OCTOCAP_LAYOUT_BODY_25, OCTOCAP_UP_Y, 30);
-    std::vector<octocap_keypoint2d_t> kps;
-    std::vector<uint32_t> people;
     for (uint32_t f = 0; f < 3; ++f) {
-      rec.read_frame(f, kps, people);
-      session.solve_keypoints(kps.data(), people.data(), rec.view_count(), f * 33333);
+      sample.solve(session, f, f * 33333);
       good.add(session.frame());
       bad.add(session.frame());
     }

@@ -552,8 +552,13 @@ enum octocap_up_axis_values {
   OCTOCAP_UP_AUTO = 2  /**< Decide from the cameras: upright cameras' image "down" axes point to world down. */
 };
 
+/**
+ * Session configuration. Fill it with octocap_session_config_init(), then change what you need. The 2D detector of
+ * octocap_session_solve_images() is configured apart (octocap_session_set_detector()), so that either struct can
+ * grow without the other.
+ */
 typedef struct octocap_session_config_t {
-  uint32_t struct_size;          /**< sizeof(octocap_session_config_t). */
+  uint32_t struct_size;          /**< sizeof(octocap_session_config_t); set by octocap_session_config_init(). */
   octocap_layout_t layout;       /**< Keypoint layout of the 2D input (AUTO is not allowed here). Default BODY_25. */
   octocap_method_t method;       /**< Default AUTO; see octocap_session_method() for the resolved one. */
   octocap_filter_t filter;       /**< Default ONE_EURO. */
@@ -570,8 +575,9 @@ typedef struct octocap_session_config_t {
   float volume_max[3];
   float filter_min_cutoff_hz;    /**< One Euro min cutoff. Default 1.5. */
   float filter_beta;             /**< One Euro speed coefficient (1/m). Default 20. */
-  uint32_t worker_threads;       /**< Threads used across joints; 0 = hardware concurrency, 1 = none. */
-  int64_t first_frame_index;     /**< Frame numbers start here (default 0): a resumed take keeps its numbering. */
+  uint32_t worker_threads;       /**< Threads used across joints; 0 = hardware concurrency, 1 = none. At most 256. */
+  int64_t first_frame_index;     /**< Frame numbers start here (default 0): a resumed take keeps its numbering.
+                                      0 .. 2^62. */
   uint32_t stream_enable;        /**< 1: publish every solved frame over DDS (see "Streaming"). Default 0. */
   uint32_t stream_domain_id;     /**< DDS domain. Default 0. */
   octocap_stream_qos_t stream_qos; /**< Default ::OCTOCAP_QOS_LIVE. */
@@ -582,8 +588,6 @@ typedef struct octocap_session_config_t {
                                       VMC's usual port is ::OCTOCAP_VMC_DEFAULT_PORT. Default 0 (off). */
   char vmc_host[64];             /**< Receiver of the VMC output. Default "127.0.0.1". */
 } octocap_session_config_t;
-
-/** Fills `cfg` with defaults and sets its struct_size. */
 
 /**
  * Fills the first `struct_size` bytes of `cfg` with defaults and sets its struct_size. Errors: INVALID_ARGUMENT
@@ -725,7 +729,8 @@ OCTOCAP_API octocap_result_t octocap_subscriber_config_defaults(octocap_subscrib
 static inline void octocap_subscriber_config_init(octocap_subscriber_config_t* cfg) {
   (void)octocap_subscriber_config_defaults(cfg, (uint32_t)sizeof *cfg);
 }
-/** Joins a stream. */
+/** Joins a stream. Errors: STRUCT_SIZE, INVALID_ARGUMENT (a domain above 232, an unknown QoS, a history depth
+ *  outside 1..100000, a topic that is not letters, digits and '_'), UNSUPPORTED (a build without DDS). */
 OCTOCAP_API octocap_result_t octocap_subscriber_create(const octocap_subscriber_config_t* cfg,
                                                        octocap_subscriber_t** out);
 /** Leaves the stream; NULL is accepted. */
