@@ -291,3 +291,38 @@ TEST_CASE("stream configuration errors", "[stream]") {
   REQUIRE(octocap_subscriber_take(nullptr, 0) == OCTOCAP_ERROR_INVALID_HANDLE);
   REQUIRE(s == nullptr);
 }
+
+TEST_CASE("a publisher that comes back with another skeleton changes the received definition counter", "[stream]") {
+  const std::string demo = std::string(OCTOCAP_REAL_DATA_DIR) + "/Demo";
+  Subscriber sub = subscribe("relayout", OCTOCAP_QOS_RECORD);
+  auto take_summary = [&](octocap_frame_summary_t& s) {
+    octocap_frame_t* frame = nullptr;
+    REQUIRE(octocap_subscriber_take_frame(sub.get(), 10000, &frame) == OCTOCAP_OK);
+    s = octocap_frame_summary_t{};
+    s.struct_size = sizeof s;
+    REQUIRE(octocap_frame_get_summary(frame, &s) == OCTOCAP_OK);
+    octocap_frame_release(frame);
+  };
+  octocap_frame_summary_t first{}, later{}, other{};
+  {
+    std::vector<std::string> args = publisher_args("relayout", "record", 0, 0.5);
+    args.insert(args.end(), {"--frames", "5"});
+    testing::ChildProcess a(args);  // the sample: BODY_25
+    take_summary(first);
+    for (int i = 1; i < 5; ++i) take_summary(later);
+    REQUIRE(a.wait() == 0);
+  }
+  CHECK(first.layout == OCTOCAP_LAYOUT_BODY_25);
+  CHECK(later.definition_counter == first.definition_counter);  // same publisher, same skeleton
+  // Pose2Sim's real demo: BODY_25B, same topic and source id.
+  std::vector<std::string> args = publisher_args("relayout", "record", 0, 0.5);
+  args[3] = demo + "/calibration/Calib_qualisys.toml";
+  args[5] = demo + "/pose";
+  args.insert(args.end(), {"--frames", "5"});
+  testing::ChildProcess b(args);
+  for (int i = 0; i < 5; ++i) take_summary(other);  // the last: its definition has certainly arrived by then
+  REQUIRE(b.wait() == 0);
+  CHECK(other.layout == OCTOCAP_LAYOUT_BODY_25B);
+  CHECK(other.definition_counter != first.definition_counter);  // consumers re-read the definition
+  CHECK(other.definition_counter != 0);
+}
