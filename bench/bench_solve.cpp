@@ -177,6 +177,50 @@ void end_to_end(const std::string& sample) {
 
 }  // namespace
 
+// What reading a frame costs, per frame: the 1.0 frame handle (snapshot, summary, keypoints, bones, release) against
+// the 0.x per-session queries that read the session in place.
+void frame_queries(octocap_calibration_t* calib, const Frames& frames) {
+  octocap_session_config_t cfg;
+  octocap_session_config_init(&cfg);
+  cfg.layout = OCTOCAP_LAYOUT_BODY_25;
+  cfg.worker_threads = 1;
+  octocap_session_t* s = nullptr;
+  if (octocap_session_create(&cfg, calib, &s) != OCTOCAP_OK) return;
+  const auto& f0 = frames.flat.front();
+  octocap_session_solve_keypoints(s, reinterpret_cast<const octocap_keypoint2d_t*>(f0.xyc.data()),
+                                  f0.people_per_view.data(), static_cast<uint32_t>(f0.people_per_view.size()), 0);
+  octocap_joint_t joints[25];
+  octocap_bone_pose_t bones[OCTOCAP_BONE_COUNT];
+  uint32_t n = 0;
+  constexpr int kReps = 20000;
+  auto time_us = [&](auto&& body) {
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int i = 0; i < kReps; ++i) body();
+    return std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count() / kReps;
+  };
+  const double framed = time_us([&] {
+    octocap_frame_t* f = nullptr;
+    octocap_session_get_frame(s, &f);
+    octocap_frame_summary_t summary{};
+    summary.struct_size = sizeof summary;
+    octocap_frame_get_summary(f, &summary);
+    octocap_frame_get_keypoints3d(f, 0, joints, 25, &n);
+    octocap_frame_get_bones(f, 0, OCTOCAP_FRAME_UNITY, bones, OCTOCAP_BONE_COUNT, &n);
+    octocap_frame_release(f);
+  });
+  const double in_place = time_us([&] {
+    octocap_frame_info_t info;
+    octocap_session_get_frame_info(s, &info);
+    octocap_session_get_keypoints3d(s, joints, 25, &n);
+    octocap_session_get_bones(s, OCTOCAP_FRAME_UNITY, bones, OCTOCAP_BONE_COUNT, &n);
+  });
+  std::printf("\nReading one solved frame (BODY_25, 13 bones in Unity's frame), us per frame:\n"
+              "  frame handle (get, summary, keypoints, bones, release): %.2f us\n"
+              "  0.x queries on the session (info, keypoints, bones):    %.2f us\n",
+              framed, in_place);
+  octocap_session_destroy(s);
+}
+
 int main(int argc, char** argv) {
   const size_t n_frames = argc > 1 ? std::stoul(argv[1]) : 200;
   const synth::Motion motion = synth::load_cmu_motion(synth::default_bvh_path(), 0, n_frames, 4);
@@ -205,6 +249,13 @@ int main(int argc, char** argv) {
       if (full) row(OCTOCAP_METHOD_SUBDIVISION, 0.01f, 2);
       row(OCTOCAP_METHOD_TRIANGULATION, 0.01f, 1);
     }
+    octocap_calibration_destroy(calib);
+  }
+  {
+    synth::RigOptions rig;
+    const Calibration cams = synth::make_camera_ring(rig);
+    octocap_calibration_t* calib = make_calib(cams);
+    frame_queries(calib, make_frames(cams, synth::Motion{{motion.frames.front()}, motion.rate_hz}, LayoutId::body25));
     octocap_calibration_destroy(calib);
   }
   hull_vs_ray();
