@@ -25,7 +25,8 @@ $SUDO apt-get install -y -q --no-install-recommends \
   mono-devel nunit-console libnunit-cil-dev \
   cyclonedds-dev cyclonedds-tools liblo-dev \
   libassimp-dev libosmesa6-dev libglfw3-dev xvfb xauth \
-  clang-14 libclang-rt-14-dev
+  clang-14 libclang-rt-14-dev \
+  ffmpeg
 $SUDO apt-get install -y -q --no-install-recommends -t bookworm-backports libcatch2-dev
 # Node.js + npm convert the shipped pose models (scripts/fetch-models.sh); keep a Node.js already installed.
 if ! command -v npm >/dev/null 2>&1; then

@@ -412,7 +412,9 @@ enum octocap_pixel_format_values {
   OCTOCAP_PIXELS_RGBA8 = 2  /**< 4 bytes per pixel, R G B A (Unity's RGBA32, Godot's FORMAT_RGBA8); alpha ignored. */
 };
 
-/** One camera image, borrowed for the duration of the call (never copied beyond it). */
+/** One camera image, borrowed for the duration of the call (never copied beyond it). An image with NULL pixels and
+ *  a zero width and height is "no picture from this camera this frame" (it lagged, dropped, is reconnecting): the
+ *  view is solved without. */
 typedef struct octocap_image_t {
   const uint8_t* pixels;          /**< Top row first. */
   uint32_t width;                 /**< Pixels. */
@@ -682,6 +684,128 @@ OCTOCAP_API octocap_result_t octocap_session_flush_stream(octocap_session_t* ses
 
 /** Resets temporal state (filter, person tracking), e.g. between takes. */
 OCTOCAP_API octocap_result_t octocap_session_reset(octocap_session_t* session);
+
+/** @} */
+/* ------------------------------------------------------------------------------------------------------ */
+/**
+ * @name Live capture: cameras in, frames out, on library threads
+ *
+ * A live handle runs one capture thread per camera and one solving thread: each camera's newest picture is kept
+ * (never a queue), pictures of the cameras are grouped by their grab time into frame sets (software sync: within a
+ * tolerance, a camera that lags or drops is left out of that set rather than waited for), each set is detected and
+ * solved as octocap_session_solve_images() does, and the newest solved frame is kept for the caller. Under
+ * overload the oldest picture or frame is dropped and counted, so latency stays bounded.
+ *
+ * Cameras are given as strings, in calibration order: a V4L2 device ("/dev/video0" or "0"), a network camera
+ * ("rtsp://...", "http://..." MJPEG), a video file (played at its own frame rate, as a camera would deliver it) or a
+ * folder of pictures (played at `picture_rate_hz`). A network camera or device that breaks is reopened with
+ * back-off while the others go on; files and folders end.
+ *
+ * Threads: the control calls (set_detector, start, stop, destroy) from one thread at a time. The frame and status
+ * queries may be called from any thread, also while the engine runs (an engine's game loop, a UI).
+ */
+/** @{ */
+
+/** Opaque live capture. */
+typedef struct octocap_live_t octocap_live_t;
+
+/** Live configuration. Fill with octocap_live_config_init() first. */
+typedef struct octocap_live_config_t {
+  uint32_t struct_size;          /**< sizeof(octocap_live_config_t); set by octocap_live_config_init(). */
+  uint32_t sync_tolerance_us;    /**< Pictures within this of a set's time belong to it. 0 (default): half a frame period
+                                      of the slowest camera. */
+  uint32_t max_wait_us;          /**< A set goes out with the cameras it has once its oldest picture waited this long.
+                                      0 (default): one frame period of the slowest camera. */
+  uint32_t open_timeout_ms;      /**< Opening a camera gives up after this. Default 5000. */
+  uint32_t read_timeout_ms;      /**< A live camera silent this long is broken and reopened. Default 3000. */
+  uint32_t reconnect_max_ms;     /**< Longest back-off between reopen attempts (it starts at 100 ms). Default 2000. */
+  float picture_rate_hz;         /**< Rate of picture-folder cameras. Default 30. */
+} octocap_live_config_t;
+
+/** Fills the first `struct_size` bytes of `cfg` with defaults (STRUCT_SIZE for an unknown size). Call it through
+ *  octocap_live_config_init(). */
+OCTOCAP_API octocap_result_t octocap_live_config_defaults(octocap_live_config_t* cfg, uint32_t struct_size);
+/** Fills `cfg` with this library's defaults; inline, so it never writes past the caller's struct. */
+static inline void octocap_live_config_init(octocap_live_config_t* cfg) {
+  (void)octocap_live_config_defaults(cfg, (uint32_t)sizeof *cfg);
+}
+
+/** Figures of a live capture. `struct_size` is set by the caller. Times are means over the frames solved so far. */
+typedef struct octocap_live_stats_t {
+  uint32_t struct_size;          /**< Set by the caller to sizeof(octocap_live_stats_t). */
+  uint32_t running;              /**< 1 between start and stop (or the end of every camera). */
+  uint32_t finished;             /**< 1 when every camera ended (files and folders played out). */
+  uint32_t camera_count;
+  uint64_t frame_sets;           /**< Frame sets solved. */
+  uint64_t frames_with_person;   /**< Of those, the ones in which a person was solved. */
+  uint64_t sets_incomplete;      /**< Sets that went out without every camera. */
+  uint64_t frames_not_taken;     /**< Solved frames replaced by a newer one before octocap_live_take_frame(). */
+  float fps;                     /**< Solved frames per second (smoothed). */
+  float capture_ms;              /**< Image collection: the set's oldest picture grabbed -> its solve starts. */
+  float detect_ms;               /**< 2D detection. */
+  float solve_ms;                /**< 3D solve, filter, rig and the session's outputs (DDS, VMC). */
+  float publish_ms;              /**< Handing the frame over. */
+  float latency_p50_ms;          /**< Grab of the oldest picture -> frame available, median of the last 1000 frames. */
+  float latency_p99_ms;          /**< ... 99th percentile. */
+} octocap_live_stats_t;
+
+/** State of one camera. */
+typedef int32_t octocap_camera_state_t;
+/** Values of ::octocap_camera_state_t. */
+enum octocap_camera_state_values {
+  OCTOCAP_CAMERA_STOPPED = 0,
+  OCTOCAP_CAMERA_CONNECTING = 1,
+  OCTOCAP_CAMERA_STREAMING = 2,
+  OCTOCAP_CAMERA_RECONNECTING = 3, /**< A live camera broke; it is being reopened with back-off. */
+  OCTOCAP_CAMERA_ENDED = 4,        /**< A file or folder played out. */
+  OCTOCAP_CAMERA_FAILED = 5
+};
+
+/** One camera's figures. `struct_size` is set by the caller. */
+typedef struct octocap_camera_status_t {
+  uint32_t struct_size;          /**< Set by the caller to sizeof(octocap_camera_status_t). */
+  octocap_camera_state_t state;
+  uint64_t grabbed;              /**< Pictures read. */
+  uint64_t used;                 /**< Pictures that went into a frame set. */
+  uint64_t dropped;              /**< Pictures replaced by a newer one before a set took them, or too old for any set. */
+  uint64_t reconnects;           /**< Times a broken live camera was reopened. */
+  float fps;                     /**< Pictures per second read (smoothed). */
+  float nominal_fps;             /**< What the camera says it delivers (0 when it does not say). */
+  char name[OCTOCAP_NAME_CAPACITY]; /**< The calibration's name of this camera. */
+} octocap_camera_status_t;
+
+/**
+ * Creates a live capture: `camera_count` camera strings in calibration order (see above), a session config (the
+ * solve, and its DDS / VMC outputs) and a calibration (copied). Nothing is opened yet. Errors: CAMERA_MISMATCH (not as
+ * many cameras as the calibration has), IO (a file, folder or device that does not exist, named), INVALID_ARGUMENT (an
+ * unknown URL scheme, a bad config), STRUCT_SIZE, INVALID_HANDLE.
+ */
+OCTOCAP_API octocap_result_t octocap_live_create(const octocap_live_config_t* cfg,
+                                                 const octocap_session_config_t* session_cfg,
+                                                 const octocap_calibration_t* calib, const char* const* cameras,
+                                                 uint32_t camera_count, octocap_live_t** out);
+/** Sets the detector (loaded now) before start; without it the default detector is loaded at start. Errors as
+ *  octocap_session_set_detector(), and INVALID_ARGUMENT while running. */
+OCTOCAP_API octocap_result_t octocap_live_set_detector(octocap_live_t* live, const octocap_detector_config_t* cfg);
+/** Loads the detector if needed, opens every camera (IO naming the first that cannot be opened; none stays open) and
+ *  starts the threads. INVALID_ARGUMENT when already running. */
+OCTOCAP_API octocap_result_t octocap_live_start(octocap_live_t* live);
+/** Stops the threads and closes the cameras; frames taken stay valid. Stopping a stopped capture is OK. */
+OCTOCAP_API octocap_result_t octocap_live_stop(octocap_live_t* live);
+/** Stops (if running) and destroys; NULL is accepted. */
+OCTOCAP_API void octocap_live_destroy(octocap_live_t* live);
+/**
+ * Takes the newest solved frame not taken before, waiting up to `timeout_ms` (0: do not wait); the caller releases
+ * it. ::OCTOCAP_STATUS_TIMEOUT with `*out` = NULL when none came in time (also once the capture stopped or finished).
+ */
+OCTOCAP_API octocap_result_t octocap_live_take_frame(octocap_live_t* live, int32_t timeout_ms, octocap_frame_t** out);
+/** The newest solved frame, taken or not (an engine reading once per game frame). NO_RESULT before the first. */
+OCTOCAP_API octocap_result_t octocap_live_get_frame(const octocap_live_t* live, octocap_frame_t** out);
+/** The capture's figures (`out->struct_size` set by the caller). */
+OCTOCAP_API octocap_result_t octocap_live_get_stats(const octocap_live_t* live, octocap_live_stats_t* out);
+/** Camera `index`'s figures (`out->struct_size` set by the caller). */
+OCTOCAP_API octocap_result_t octocap_live_get_camera_status(const octocap_live_t* live, uint32_t index,
+                                                            octocap_camera_status_t* out);
 
 /** @} */
 /* ------------------------------------------------------------------------------------------------------ */

@@ -213,6 +213,46 @@ class Subscriber {
   detail::Owned<octocap_subscriber_t, octocap_subscriber_destroy> s_;
 };
 
+/** A live capture (octocap_live_*): cameras in, frames out on library threads. */
+class Live {
+ public:
+  Live(const octocap_live_config_t& cfg, const octocap_session_config_t& session_cfg, const Calibration& calib,
+       const std::vector<std::string>& cameras) {
+    std::vector<const char*> specs;
+    for (const std::string& c : cameras) specs.push_back(c.c_str());
+    octocap_live_t* l = nullptr;
+    check(octocap_live_create(&cfg, &session_cfg, calib.get(), specs.data(), static_cast<uint32_t>(specs.size()), &l),
+          "creating the live capture");
+    l_.reset(l);
+  }
+  octocap_live_t* get() const { return l_.get(); }
+  void set_detector(const octocap_detector_config_t& cfg) { check(octocap_live_set_detector(l_.get(), &cfg), "detector"); }
+  void start() { check(octocap_live_start(l_.get()), "starting the live capture"); }
+  void stop() { check(octocap_live_stop(l_.get()), "stopping the live capture"); }
+  /** The next solved frame, or nothing within `timeout_ms`. */
+  std::optional<Frame> take(int32_t timeout_ms) {
+    octocap_frame_t* f = nullptr;
+    if (check(octocap_live_take_frame(l_.get(), timeout_ms, &f), "taking a frame") == OCTOCAP_STATUS_TIMEOUT)
+      return std::nullopt;
+    return Frame(f);
+  }
+  octocap_live_stats_t stats() const {
+    octocap_live_stats_t s{};
+    s.struct_size = sizeof s;
+    check(octocap_live_get_stats(l_.get(), &s), "live stats");
+    return s;
+  }
+  octocap_camera_status_t camera(uint32_t index) const {
+    octocap_camera_status_t c{};
+    c.struct_size = sizeof c;
+    check(octocap_live_get_camera_status(l_.get(), index, &c), "camera status");
+    return c;
+  }
+
+ private:
+  detail::Owned<octocap_live_t, octocap_live_destroy> l_;
+};
+
 class Recording {
  public:
   Recording(const std::string& dir, octocap_layout_t layout = OCTOCAP_LAYOUT_AUTO) {

@@ -10,6 +10,7 @@
 #include "detect/detector.h"
 #include "io/openpose_json.h"
 #include "octocap/octocap.h"
+#include "pipeline/live_engine.h"
 #include "pipeline/session.h"
 #include "rig/motion_source.h"
 #include "rig/motion_writer.h"
@@ -49,6 +50,10 @@ struct octocap_motion_t {
   octocap::SkeletonMotion motion;
   std::vector<octocap::SkeletonPose> bones;  // solved once at open, per frame
   uint32_t definition_counter = 0;
+};
+
+struct octocap_live_t {
+  std::unique_ptr<octocap::LiveEngine> engine;
 };
 
 struct octocap_subscriber_t {

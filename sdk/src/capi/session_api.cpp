@@ -9,15 +9,16 @@
 #include "capi/frame_queries.h"
 #include "capi/stream_c.h"
 #include "capi/detect_c.h"
+#include "capi/session_c.h"
 #include "capi/struct_versions.h"
 #include "core/log.h"
 
 using namespace octocap;
 
-namespace {
+namespace octocap::capi {
 
 // The C struct -> SessionConfig: a mapping only; Session validates the values (pipeline/session.cpp).
-SessionConfig from_c(const octocap_session_config_t* given) {
+SessionConfig session_config(const octocap_session_config_t* given) {
   capi::require(given, "cfg");
   capi::check_size(given->struct_size, capi::kSessionConfigSizes, "octocap_session_config_t");
   octocap_session_config_t defaults;
@@ -70,6 +71,10 @@ SessionConfig from_c(const octocap_session_config_t* given) {
   s.detector = capi::detector_config(detector);
   return s;
 }
+
+}  // namespace octocap::capi
+
+namespace {
 
 const FrameResult& result_of(const octocap_session_t* s) {
   capi::checked(s, "session");
@@ -127,7 +132,7 @@ octocap_result_t octocap_session_create(const octocap_session_config_t* cfg, con
     capi::require(out, "out");
     *out = nullptr;
     capi::checked(calib, "calibration");
-    const SessionConfig config = from_c(cfg);
+    const SessionConfig config = capi::session_config(cfg);
     auto session = std::make_unique<Session>(config, calib->cameras);
     *out = capi::make_handle<octocap_session_t>(std::move(session));
   });

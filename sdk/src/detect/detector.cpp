@@ -126,9 +126,12 @@ std::vector<std::vector<DetectedPerson>> Detector::detect_mosaic(const std::vect
   const auto t0 = Clock::now();
   std::vector<ViewSize> sizes;
   std::vector<double> aspects;
+  ViewSize stand_in{0, 0};  // an absent view keeps its tile (black) at a present view's size
+  for (const ImageView& v : views)
+    if (!absent(v)) stand_in = {v.width, v.height};
   for (const ImageView& v : views) {
-    sizes.push_back({v.width, v.height});
-    aspects.push_back(static_cast<double>(v.width) / v.height);
+    sizes.push_back(absent(v) ? stand_in : ViewSize{v.width, v.height});
+    if (!absent(v)) aspects.push_back(static_cast<double>(v.width) / v.height);
   }
   std::nth_element(aspects.begin(), aspects.begin() + aspects.size() / 2, aspects.end());
   const int m = card_.size_multiple;
@@ -138,7 +141,8 @@ std::vector<std::vector<DetectedPerson>> Detector::detect_mosaic(const std::vect
   RgbCanvas canvas;
   canvas.reset(layout_plan.width, layout_plan.height);
   for (size_t v = 0; v < views.size(); ++v)
-    draw_letterboxed(views[v], {0, 0, static_cast<double>(views[v].width), static_cast<double>(views[v].height)},
+    if (!absent(views[v]))
+      draw_letterboxed(views[v], {0, 0, static_cast<double>(views[v].width), static_cast<double>(views[v].height)},
                      layout_plan.tiles[v].cell, layout_plan.tiles[v].box, canvas);
   const auto t1 = Clock::now();
   timings_.preprocess_ms += std::chrono::duration<double, std::milli>(t1 - t0).count();
@@ -173,7 +177,13 @@ std::vector<DetectedPerson> Detector::detect_view(size_t v, const ImageView& vie
 
 std::vector<std::vector<DetectedPerson>> Detector::detect(const std::vector<ImageView>& views) {
   if (views.empty()) throw Error(Errc::invalid_argument, "no images");
-  for (size_t v = 0; v < views.size(); ++v) validate_image(views[v], ("image " + std::to_string(v)).c_str());
+  size_t present = 0;
+  for (size_t v = 0; v < views.size(); ++v) {
+    if (absent(views[v])) continue;
+    validate_image(views[v], ("image " + std::to_string(v)).c_str());
+    ++present;
+  }
+  if (present == 0) return std::vector<std::vector<DetectedPerson>>(views.size());
   const auto t0 = Clock::now();
   timings_ = {};
   std::vector<std::vector<DetectedPerson>> result;
@@ -189,7 +199,7 @@ std::vector<std::vector<DetectedPerson>> Detector::detect(const std::vector<Imag
     auto worker = [&] {
       for (size_t v = next++; v < views.size(); v = next++) {
         try {
-          result[v] = detect_view(v, views[v]);
+          if (!absent(views[v])) result[v] = detect_view(v, views[v]);
         } catch (...) {
           const std::lock_guard<std::mutex> lock(failure_mutex);
           if (!failure) failure = std::current_exception();

@@ -14,6 +14,9 @@ struct ImageView {
   PixelFormat format = PixelFormat::rgb8;
 };
 
+// A view with no picture this frame (a camera that lagged, dropped or is reconnecting): no pixels, no size.
+inline bool absent(const ImageView& v) { return v.pixels == nullptr && v.width == 0 && v.height == 0; }
+
 int bytes_per_pixel(PixelFormat f);
 // Throws Error(invalid_argument) naming `what` for null pixels, zero size, a stride shorter than a row, or an
 // unknown format.

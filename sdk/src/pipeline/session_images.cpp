@@ -42,7 +42,9 @@ bool Session::solve_images(const std::vector<ImageView>& images, int64_t timesta
   std::vector<Eigen::Vector2d> scale(images.size(), Eigen::Vector2d::Ones());
   for (size_t v = 0; v < images.size(); ++v) {
     const Camera& cam = calib_[v];
-    if (cam.width <= 0 || cam.height <= 0 || (cam.width == images[v].width && cam.height == images[v].height)) continue;
+    if (absent(images[v]) || cam.width <= 0 || cam.height <= 0 ||
+        (cam.width == images[v].width && cam.height == images[v].height))
+      continue;
     scale[v] = {static_cast<double>(cam.width) / images[v].width, static_cast<double>(cam.height) / images[v].height};
     if (std::abs(scale[v].x() / scale[v].y() - 1) > 0.01)
       throw Error(Errc::invalid_argument, "image " + std::to_string(v) + " is " + std::to_string(images[v].width) + "x" +

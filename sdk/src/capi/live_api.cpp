@@ -1,0 +1,158 @@
+// Live capture handles: the C shell over pipeline/live_engine.
+#include <cstring>
+
+#include "capi/boundary.h"
+#include "capi/detect_c.h"
+#include "capi/frame_queries.h"
+#include "capi/handles.h"
+#include "capi/session_c.h"
+#include "capi/struct_versions.h"
+
+using namespace octocap;
+
+namespace {
+
+LiveEngine& engine_of(octocap_live_t* l) { return *capi::checked(l, "live")->engine; }
+const LiveEngine& engine_of(const octocap_live_t* l) { return *capi::checked(l, "live")->engine; }
+
+octocap_camera_state_t state_c(FeedState s) { return static_cast<octocap_camera_state_t>(s); }
+
+}  // namespace
+
+extern "C" {
+
+octocap_result_t octocap_live_config_defaults(octocap_live_config_t* c, uint32_t struct_size) {
+  return capi::guard([&] {
+    capi::require(c, "cfg");
+    capi::check_size(struct_size, capi::kLiveConfigSizes, "octocap_live_config_t");
+    octocap_live_config_t d{};
+    d.open_timeout_ms = 5000;
+    d.read_timeout_ms = 3000;
+    d.reconnect_max_ms = 2000;
+    d.picture_rate_hz = 30;
+    capi::write_defaults(c, struct_size, d);
+  });
+}
+
+octocap_result_t octocap_live_create(const octocap_live_config_t* given, const octocap_session_config_t* session_cfg,
+                                     const octocap_calibration_t* calib, const char* const* cameras,
+                                     uint32_t camera_count, octocap_live_t** out) {
+  return capi::guard([&] {
+    capi::require(out, "out");
+    *out = nullptr;
+    capi::require(given, "cfg");
+    capi::check_size(given->struct_size, capi::kLiveConfigSizes, "octocap_live_config_t");
+    capi::checked(calib, "calibration");
+    if (camera_count > 0) capi::require(cameras, "cameras");
+    octocap_live_config_t c = *given;
+    capi::require_finite(c.picture_rate_hz, "cfg.picture_rate_hz");
+    if (!(c.picture_rate_hz >= 0.01f && c.picture_rate_hz <= 1000.0f))
+      throw Error(Errc::invalid_argument, "cfg.picture_rate_hz must be 0.01 to 1000");
+    if (c.open_timeout_ms < 1 || c.open_timeout_ms > 600000 || c.read_timeout_ms < 1 || c.read_timeout_ms > 600000)
+      throw Error(Errc::invalid_argument, "cfg.open_timeout_ms and read_timeout_ms must be 1 ms to 10 minutes");
+    if (c.reconnect_max_ms < 100 || c.reconnect_max_ms > 600000)
+      throw Error(Errc::invalid_argument, "cfg.reconnect_max_ms must be 100 ms to 10 minutes");
+    LiveConfig config;
+    config.session = capi::session_config(session_cfg);
+    config.feeds.source.open_timeout_ms = static_cast<int>(c.open_timeout_ms);
+    config.feeds.source.read_timeout_ms = static_cast<int>(c.read_timeout_ms);
+    config.feeds.source.picture_rate_hz = c.picture_rate_hz;
+    config.feeds.reconnect_max_ms = static_cast<int>(c.reconnect_max_ms);
+    config.sync_tolerance_us = c.sync_tolerance_us;
+    config.max_wait_us = c.max_wait_us;
+    std::vector<std::string> specs;
+    for (uint32_t i = 0; i < camera_count; ++i) {
+      if (!cameras[i]) throw Error(Errc::invalid_argument, "camera " + std::to_string(i) + " is NULL");
+      specs.emplace_back(cameras[i]);
+    }
+    auto engine = std::make_unique<LiveEngine>(config, calib->cameras, specs);
+    *out = capi::make_handle<octocap_live_t>(std::move(engine));
+  });
+}
+
+octocap_result_t octocap_live_set_detector(octocap_live_t* l, const octocap_detector_config_t* cfg) {
+  return capi::guard([&] {
+    LiveEngine& e = engine_of(l);
+    capi::require(cfg, "cfg");
+    e.set_detector(capi::detector_config(*cfg));
+  });
+}
+
+octocap_result_t octocap_live_start(octocap_live_t* l) {
+  return capi::guard([&] { engine_of(l).start(); });
+}
+
+octocap_result_t octocap_live_stop(octocap_live_t* l) {
+  return capi::guard([&] { engine_of(l).stop(); });
+}
+
+void octocap_live_destroy(octocap_live_t* l) { capi::destroy_handle(l); }
+
+octocap_result_t octocap_live_take_frame(octocap_live_t* l, int32_t timeout_ms, octocap_frame_t** out) {
+  bool taken = false;
+  const octocap_result_t r = capi::guard([&] {
+    capi::require(out, "out");
+    *out = nullptr;
+    LiveEngine& e = engine_of(l);
+    std::shared_ptr<const FrameResult> frame = e.take(timeout_ms);
+    if (!frame) return;
+    *out = capi::make_frame(std::move(frame));
+    taken = true;
+  });
+  return capi::status_unless(r, taken, OCTOCAP_STATUS_TIMEOUT);
+}
+
+octocap_result_t octocap_live_get_frame(const octocap_live_t* l, octocap_frame_t** out) {
+  return capi::guard([&] {
+    capi::require(out, "out");
+    *out = nullptr;
+    std::shared_ptr<const FrameResult> frame = engine_of(l).latest();
+    if (!frame) throw Error(Errc::no_result, "no frame has been solved yet");
+    *out = capi::make_frame(std::move(frame));
+  });
+}
+
+octocap_result_t octocap_live_get_stats(const octocap_live_t* l, octocap_live_stats_t* out) {
+  return capi::guard([&] {
+    const LiveEngine& e = engine_of(l);
+    capi::fill_sized(out, sizeof(octocap_live_stats_t), "octocap_live_stats_t", [&](octocap_live_stats_t& o) {
+      const LiveStats s = e.stats();
+      o.running = s.running ? 1 : 0;
+      o.finished = s.finished ? 1 : 0;
+      o.camera_count = static_cast<uint32_t>(e.camera_count());
+      o.frame_sets = s.frame_sets;
+      o.frames_with_person = s.frames_with_person;
+      o.sets_incomplete = s.sets_incomplete;
+      o.frames_not_taken = s.frames_not_taken;
+      o.fps = static_cast<float>(s.fps);
+      o.capture_ms = static_cast<float>(s.capture_ms);
+      o.detect_ms = static_cast<float>(s.detect_ms);
+      o.solve_ms = static_cast<float>(s.solve_ms);
+      o.publish_ms = static_cast<float>(s.publish_ms);
+      o.latency_p50_ms = static_cast<float>(s.latency_p50_ms);
+      o.latency_p99_ms = static_cast<float>(s.latency_p99_ms);
+    });
+  });
+}
+
+octocap_result_t octocap_live_get_camera_status(const octocap_live_t* l, uint32_t index, octocap_camera_status_t* out) {
+  return capi::guard([&] {
+    const LiveEngine& e = engine_of(l);
+    if (index >= e.camera_count())
+      throw Error(Errc::invalid_argument, "camera " + std::to_string(index) + " out of range (" +
+                                              std::to_string(e.camera_count()) + " cameras)");
+    capi::fill_sized(out, sizeof(octocap_camera_status_t), "octocap_camera_status_t", [&](octocap_camera_status_t& o) {
+      const FeedStatus s = e.camera_status(index);
+      o.state = state_c(s.state);
+      o.grabbed = s.grabbed;
+      o.used = s.used;
+      o.dropped = s.dropped;
+      o.reconnects = s.reconnects;
+      o.fps = static_cast<float>(s.fps);
+      o.nominal_fps = static_cast<float>(s.nominal_fps);
+      capi::copy_name(o.name, sizeof o.name, e.camera_name(index));
+    });
+  });
+}
+
+}  // extern "C"

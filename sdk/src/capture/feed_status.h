@@ -1,0 +1,31 @@
+// What a camera feed reports, and how it is run: plain data, free of OpenCV, for the engine's and the C ABI's use.
+#pragma once
+#include <cstdint>
+#include <string>
+
+#include "capture/camera_spec.h"
+
+namespace octocap {
+
+enum class FeedState : int { stopped = 0, connecting = 1, streaming = 2, reconnecting = 3, ended = 4, failed = 5 };
+const char* feed_state_name(FeedState s);
+
+struct FeedStatus {
+  FeedState state = FeedState::stopped;
+  uint64_t grabbed = 0;     // pictures read from the source
+  uint64_t used = 0;        // taken by the consumer
+  uint64_t dropped = 0;     // replaced by a newer one before the consumer took them
+  uint64_t reconnects = 0;  // times a live source was reopened after a break
+  double fps = 0;           // pictures per second read, smoothed
+  double nominal_fps = 0;   // what the source says it delivers (0: it does not say)
+  std::string last_error;
+};
+
+struct FeedOptions {
+  SourceOptions source;
+  int reconnect_min_ms = 100;   // first back-off; doubles up to the max
+  int reconnect_max_ms = 2000;
+  bool pace_files = true;       // play files and folders at their own rate, as a camera would deliver them
+};
+
+}  // namespace octocap

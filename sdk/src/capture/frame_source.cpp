@@ -1,0 +1,107 @@
+#include "capture/frame_source.h"
+
+#include <stdlib.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <vector>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/videoio.hpp>
+
+#include "core/error.h"
+
+namespace octocap {
+namespace {
+
+// FFmpeg logs to stderr on its own (a refused connection, each retry); the library prints nothing, so it is told to
+// be quiet unless the user asked otherwise (OPENCV_FFMPEG_LOGLEVEL set). Reasons reach the log through Error.
+void quiet_ffmpeg() {
+  static const bool once = [] {
+    setenv("OPENCV_FFMPEG_LOGLEVEL", "-8", 0);
+    return true;
+  }();
+  (void)once;
+}
+
+class VideoSource : public FrameSource {
+ public:
+  VideoSource(CameraSpec spec, SourceOptions options) : spec_(std::move(spec)), options_(options) {}
+
+  void open() override {
+    quiet_ffmpeg();
+    cap_.release();
+    const std::vector<int> params = {cv::CAP_PROP_OPEN_TIMEOUT_MSEC, options_.open_timeout_ms,
+                                     cv::CAP_PROP_READ_TIMEOUT_MSEC, options_.read_timeout_ms};
+    const bool ok = spec_.kind == SourceKind::device ? cap_.open(spec_.device_index, cv::CAP_V4L2, params)
+                                                     : cap_.open(spec_.location, cv::CAP_FFMPEG, params);
+    if (!ok || !cap_.isOpened()) throw Error(Errc::io, "camera '" + spec_.text + "': cannot be opened");
+    // Live sources: the driver's queue is latency, not safety; the feed keeps the newest picture itself.
+    if (spec_.live()) cap_.set(cv::CAP_PROP_BUFFERSIZE, 1);
+    first_pts_ms_ = -1;
+  }
+
+  bool read(cv::Mat& bgr, int64_t& stream_us) override {
+    if (!cap_.grab() || !cap_.retrieve(bgr) || bgr.empty()) return false;
+    const double pts_ms = cap_.get(cv::CAP_PROP_POS_MSEC);
+    if (first_pts_ms_ < 0) first_pts_ms_ = pts_ms;
+    stream_us = static_cast<int64_t>((pts_ms - first_pts_ms_) * 1000.0);
+    return true;
+  }
+
+  double nominal_fps() const override {
+    const double fps = cap_.get(cv::CAP_PROP_FPS);
+    return fps > 0 && fps < 1000 ? fps : 0;
+  }
+
+ private:
+  CameraSpec spec_;
+  SourceOptions options_;
+  cv::VideoCapture cap_;
+  double first_pts_ms_ = -1;
+};
+
+class PictureFolderSource : public FrameSource {
+ public:
+  PictureFolderSource(CameraSpec spec, SourceOptions options) : spec_(std::move(spec)), options_(options) {}
+
+  void open() override {
+    files_.clear();
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(spec_.location, ec)) {
+      std::string ext = e.path().extension().string();
+      std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+      if (e.is_regular_file() && (ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".bmp"))
+        files_.push_back(e.path().string());
+    }
+    std::sort(files_.begin(), files_.end());
+    if (files_.empty()) throw Error(Errc::io, "camera '" + spec_.text + "': the folder holds no pictures");
+    next_ = 0;
+  }
+
+  bool read(cv::Mat& bgr, int64_t& stream_us) override {
+    if (next_ >= files_.size()) return false;
+    bgr = cv::imread(files_[next_]);
+    if (bgr.empty()) throw Error(Errc::io, "camera '" + spec_.text + "': cannot read " + files_[next_]);
+    stream_us = static_cast<int64_t>(next_ * 1e6 / options_.picture_rate_hz);
+    ++next_;
+    return true;
+  }
+
+  double nominal_fps() const override { return options_.picture_rate_hz; }
+
+ private:
+  CameraSpec spec_;
+  SourceOptions options_;
+  std::vector<std::string> files_;
+  size_t next_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<FrameSource> make_frame_source(const CameraSpec& spec, const SourceOptions& options) {
+  if (spec.kind == SourceKind::picture_folder) return std::make_unique<PictureFolderSource>(spec, options);
+  return std::make_unique<VideoSource>(spec, options);
+}
+
+}  // namespace octocap

@@ -1,0 +1,212 @@
+#include "pipeline/live_engine.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "capture/camera_feed.h"
+#include "core/clock.h"
+#include "core/error.h"
+#include "core/log.h"
+
+namespace octocap {
+namespace {
+
+constexpr size_t kLatencyWindow = 1000;
+
+// Running mean: stats are means over every frame solved.
+void accumulate(double& mean, double value, uint64_t n) { mean += (value - mean) / static_cast<double>(n); }
+
+double percentile(std::vector<double> v, double p) {
+  if (v.empty()) return 0;
+  const size_t k = std::min(v.size() - 1, static_cast<size_t>(p * static_cast<double>(v.size())));
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+  return v[k];
+}
+
+}  // namespace
+
+LiveEngine::LiveEngine(const LiveConfig& config, Calibration calib, const std::vector<std::string>& cameras)
+    : config_(config), calib_(std::move(calib)) {
+  if (cameras.size() != calib_.size())
+    throw Error(Errc::camera_mismatch, std::to_string(cameras.size()) + " cameras given, the calibration has " +
+                                           std::to_string(calib_.size()) + " (give them in calibration order)");
+  for (size_t c = 0; c < cameras.size(); ++c)
+    feeds_.push_back(std::make_unique<CameraFeed>(parse_camera_spec(cameras[c]), config_.feeds, [this] {
+      {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        input_pending_ = true;
+      }
+      new_input_.notify_one();
+    }));
+  if (!config_.latency_offsets_us.empty() && config_.latency_offsets_us.size() != cameras.size())
+    throw Error(Errc::invalid_argument, "latency offsets: one per camera");
+  session_ = std::make_unique<Session>(config_.session, calib_);
+}
+
+LiveEngine::~LiveEngine() { stop(); }
+
+FeedStatus LiveEngine::camera_status(size_t i) const { return feeds_.at(i)->status(); }
+const CameraSpec& LiveEngine::camera_spec(size_t i) const { return feeds_.at(i)->spec(); }
+
+void LiveEngine::set_detector(const DetectorConfig& config) {
+  if (running_) throw Error(Errc::invalid_argument, "the live engine is running: set the detector before start");
+  session_->set_detector(config);
+}
+
+void LiveEngine::start() {
+  if (running_) throw Error(Errc::invalid_argument, "the live engine is already running");
+  if (!session_->detector()) session_->set_detector(config_.session.detector);  // fail before opening cameras
+  size_t opened = 0;
+  try {
+    for (; opened < feeds_.size(); ++opened) feeds_[opened]->start();
+  } catch (...) {
+    for (size_t c = 0; c < opened; ++c) feeds_[c]->stop();
+    throw;
+  }
+  double slowest = 0;
+  for (const auto& f : feeds_)
+    if (f->nominal_fps() > 0) slowest = slowest > 0 ? std::min(slowest, f->nominal_fps()) : f->nominal_fps();
+  if (slowest <= 0) slowest = 30;
+  sync_ = FrameSetOptions{};
+  sync_.tolerance_us = config_.sync_tolerance_us > 0 ? config_.sync_tolerance_us : static_cast<int64_t>(0.5e6 / slowest);
+  sync_.max_wait_us = config_.max_wait_us > 0 ? config_.max_wait_us : static_cast<int64_t>(1e6 / slowest);
+  sync_.offsets_us = config_.latency_offsets_us;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    stats_ = LiveStats{};
+    stats_.running = true;
+    latencies_ms_.clear();
+    latency_next_ = 0;
+  }
+  stop_ = false;
+  running_ = true;
+  thread_ = std::thread([this] { run(); });
+}
+
+void LiveEngine::stop() {
+  stop_ = true;
+  new_input_.notify_all();
+  new_output_.notify_all();
+  if (thread_.joinable()) thread_.join();
+  for (auto& f : feeds_) f->stop();
+  running_ = false;
+  const std::lock_guard<std::mutex> lock(mutex_);
+  stats_.running = false;
+}
+
+std::shared_ptr<const FrameResult> LiveEngine::latest() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return latest_;
+}
+
+std::shared_ptr<const FrameResult> LiveEngine::take(int timeout_ms) {
+  std::unique_lock<std::mutex> lock(mutex_);
+  new_output_.wait_for(lock, std::chrono::milliseconds(std::max(0, timeout_ms)),
+                       [&] { return latest_serial_ > taken_serial_ || stop_ || stats_.finished; });
+  if (latest_serial_ <= taken_serial_) return nullptr;
+  taken_serial_ = latest_serial_;
+  return latest_;
+}
+
+LiveStats LiveEngine::stats() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  LiveStats s = stats_;
+  s.latency_p50_ms = percentile(latencies_ms_, 0.5);
+  s.latency_p99_ms = percentile(latencies_ms_, 0.99);
+  return s;
+}
+
+void LiveEngine::run() {
+  const size_t n = feeds_.size();
+  std::vector<uint64_t> last_used(n, 0);
+  std::vector<Candidate> candidates(n);
+  std::vector<uint64_t> sequence(n, 0);
+  std::vector<CapturedFrame> frames(n);
+  std::vector<bool> present(n);
+  while (!stop_) {
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      // A short timeout: a set that waits for a late camera goes out at max_wait even if nothing new arrives.
+      new_input_.wait_for(lock, std::chrono::milliseconds(5), [&] { return input_pending_ || stop_.load(); });
+      input_pending_ = false;
+    }
+    if (stop_) break;
+    bool any = false, all_done = true;
+    for (size_t c = 0; c < n; ++c) {
+      int64_t grab = 0;
+      candidates[c] = Candidate{};
+      if (feeds_[c]->peek(grab, sequence[c])) candidates[c] = {sequence[c] > last_used[c], grab, grab};
+      any = any || candidates[c].present;
+      const FeedState st = feeds_[c]->status().state;
+      all_done = all_done && (st == FeedState::ended || st == FeedState::failed);
+    }
+    if (!any) {
+      if (all_done) break;  // files played out
+      continue;
+    }
+    const FrameSetDecision d = decide_frame_set(candidates, monotonic_us(), sync_);
+    for (size_t c = 0; c < n; ++c)
+      if (d.discard[c]) last_used[c] = sequence[c];  // left for a newer one: the feed counts it as dropped
+    if (!d.emit) continue;
+    bool complete = true;
+    for (size_t c = 0; c < n; ++c) {
+      present[c] = d.take[c] && feeds_[c]->take_newer(last_used[c], frames[c]);
+      if (present[c]) last_used[c] = frames[c].sequence;
+      complete = complete && present[c];
+    }
+    solve_set(frames, present, d.time_us);
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (!complete) ++stats_.sets_incomplete;
+  }
+  const std::lock_guard<std::mutex> lock(mutex_);
+  stats_.finished = !stop_;
+  new_output_.notify_all();
+}
+
+void LiveEngine::solve_set(const std::vector<CapturedFrame>& frames, const std::vector<bool>& present,
+                           int64_t set_time_us) {
+  const int64_t t0 = monotonic_us();
+  int64_t oldest_grab = t0;
+  std::vector<ImageView> views(frames.size());
+  for (size_t c = 0; c < frames.size(); ++c) {
+    if (!present[c]) continue;  // an absent view: solved without
+    const cv::Mat& m = frames[c].image;
+    views[c] = {m.data, m.cols, m.rows, static_cast<int>(m.step[0]), PixelFormat::bgr8};
+    oldest_grab = std::min(oldest_grab, frames[c].grab_us);
+  }
+  bool solved = false;
+  try {
+    solved = session_->solve_images(views, set_time_us);
+  } catch (const Error& e) {
+    log(LogLevel::warning, std::string("live: a frame set could not be solved: ") + e.what());
+    const std::lock_guard<std::mutex> lock(mutex_);
+    stats_.last_error = e.what();
+    return;
+  }
+  const int64_t t1 = monotonic_us();
+  auto frame = std::make_shared<const FrameResult>(session_->result());
+  const double detect_ms = session_->detector() ? session_->detector()->timings().total_ms : 0;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (latest_serial_ > taken_serial_) ++stats_.frames_not_taken;
+    latest_ = std::move(frame);
+    ++latest_serial_;
+    const uint64_t k = ++stats_.frame_sets;
+    if (solved) ++stats_.frames_with_person;
+    const double latency = static_cast<double>(monotonic_us() - oldest_grab) / 1000.0;
+    accumulate(stats_.capture_ms, static_cast<double>(t0 - oldest_grab) / 1000.0, k);
+    accumulate(stats_.detect_ms, detect_ms, k);
+    accumulate(stats_.solve_ms, static_cast<double>(t1 - t0) / 1000.0 - detect_ms, k);
+    accumulate(stats_.publish_ms, static_cast<double>(monotonic_us() - t1) / 1000.0, k);
+    if (latencies_ms_.size() < kLatencyWindow) latencies_ms_.push_back(latency);
+    else latencies_ms_[latency_next_++ % kLatencyWindow] = latency;
+    if (last_solved_us_ > 0 && t1 > last_solved_us_) {
+      const double instant = 1e6 / static_cast<double>(t1 - last_solved_us_);
+      stats_.fps = stats_.fps > 0 ? 0.9 * stats_.fps + 0.1 * instant : instant;
+    }
+    last_solved_us_ = t1;
+  }
+  new_output_.notify_all();
+}
+
+}  // namespace octocap

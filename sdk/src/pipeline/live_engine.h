@@ -1,0 +1,98 @@
+// The live engine: N camera feeds (capture/), frame-set assembly (software sync), and one solving thread running
+// the session (detect -> solve -> rig -> the session's sinks: DDS, VMC). Every hand-over is a mailbox of one: a
+// feed keeps its newest picture, the engine keeps its newest solved frame; under overload the oldest is dropped
+// and counted, so latency is bounded by design.
+#pragma once
+#include <array>
+#include <atomic>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "capture/feed_status.h"
+#include "capture/frame_set.h"
+#include "core/frame.h"
+#include "pipeline/session.h"
+
+namespace octocap {
+
+class CameraFeed;
+struct CapturedFrame;
+
+struct LiveConfig {
+  SessionConfig session;
+  FeedOptions feeds;
+  int64_t sync_tolerance_us = 0;  // 0: half a frame period of the slowest camera
+  int64_t max_wait_us = 0;        // 0: one frame period of the slowest camera
+  std::vector<int64_t> latency_offsets_us;  // per camera (see FrameSetOptions::offsets_us)
+};
+
+// Means over the frames solved so far, and the latency distribution of the last ones.
+struct LiveStats {
+  bool running = false;
+  bool finished = false;          // every camera ended (files played out)
+  uint64_t frame_sets = 0;        // sets assembled and solved
+  uint64_t frames_with_person = 0;
+  uint64_t sets_incomplete = 0;   // sets that went out without every camera
+  uint64_t frames_not_taken = 0;  // solved frames replaced before anyone took them (the output mailbox)
+  double fps = 0;                 // solved frames per second, smoothed
+  double capture_ms = 0;          // grab of the set's oldest picture -> the solve starts (waiting for the set)
+  double detect_ms = 0;
+  double solve_ms = 0;            // 3D + rig
+  double publish_ms = 0;          // sinks and the output mailbox
+  double latency_p50_ms = 0;      // grab of the oldest picture -> frame available
+  double latency_p99_ms = 0;
+  std::string last_error;         // a solve that failed (the engine goes on)
+};
+
+class LiveEngine {
+ public:
+  // Parses every camera spec (errors name it) and checks the count against the calibration; opens nothing yet.
+  LiveEngine(const LiveConfig& config, Calibration calib, const std::vector<std::string>& cameras);
+  ~LiveEngine();
+  LiveEngine(const LiveEngine&) = delete;
+  LiveEngine& operator=(const LiveEngine&) = delete;
+
+  void set_detector(const DetectorConfig& config);  // before start()
+  // Opens every camera (Error(io) naming one that cannot be opened; the others are closed again), then runs.
+  void start();
+  void stop();  // idempotent
+  bool running() const { return running_; }
+
+  // The newest solved frame (null before the first).
+  std::shared_ptr<const FrameResult> latest() const;
+  // The newest frame newer than the last one this call returned, waiting up to timeout_ms; null on timeout.
+  std::shared_ptr<const FrameResult> take(int timeout_ms);
+  LiveStats stats() const;
+  size_t camera_count() const { return feeds_.size(); }
+  FeedStatus camera_status(size_t i) const;
+  const CameraSpec& camera_spec(size_t i) const;
+  const std::string& camera_name(size_t i) const { return calib_.at(i).name; }
+
+ private:
+  void run();
+  void solve_set(const std::vector<CapturedFrame>& frames, const std::vector<bool>& present, int64_t set_time_us);
+
+  LiveConfig config_;
+  Calibration calib_;
+  std::unique_ptr<Session> session_;
+  std::vector<std::unique_ptr<CameraFeed>> feeds_;
+  FrameSetOptions sync_;
+  std::thread thread_;
+  std::atomic<bool> running_{false}, stop_{false};
+  mutable std::mutex mutex_;          // guards what follows
+  std::condition_variable new_input_; // a feed has a picture (or stop)
+  std::condition_variable new_output_;
+  bool input_pending_ = false;
+  std::shared_ptr<const FrameResult> latest_;
+  uint64_t latest_serial_ = 0, taken_serial_ = 0;
+  LiveStats stats_;
+  std::vector<double> latencies_ms_;  // ring of the last ones
+  size_t latency_next_ = 0;
+  int64_t last_solved_us_ = 0;
+};
+
+}  // namespace octocap

@@ -1,0 +1,322 @@
+// Live capture: frame-set assembly on known timestamps, then the whole engine on real videos played as cameras,
+// real network cameras (ffmpeg serving MJPEG over HTTP on loopback) killed and restarted, and misuse.
+// Behaviour is asserted (frames solved, accuracy, reconnects seen), never wall-clock speed.
+#include <catch2/catch_test_macros.hpp>
+#include <catch2/matchers/catch_matchers_string.hpp>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <chrono>
+#include <filesystem>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "capture/frame_set.h"
+#include "octocap/octocap.hpp"
+#include "support/child_process.h"
+#include "support/run_command.h"
+#include "support/temp_dir.h"
+
+using Catch::Matchers::ContainsSubstring;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kVideos = std::string(OCTOCAP_SOURCE_DIR) + "/.cache/pose2sim-0.10.49/Demo_SinglePerson/videos/";
+const std::string kDemo = std::string(OCTOCAP_REAL_DATA_DIR) + "/Demo";
+
+std::vector<std::string> demo_videos() {
+  std::vector<std::string> v;
+  for (int c = 1; c <= 4; ++c) v.push_back(kVideos + "cam0" + std::to_string(c) + ".mp4");
+  return v;
+}
+
+octocap_session_config_t coco_session() {
+  octocap_session_config_t cfg;
+  octocap_session_config_init(&cfg);
+  cfg.layout = OCTOCAP_LAYOUT_COCO_17;  // the shipped models' layout
+  cfg.filter = OCTOCAP_FILTER_NONE;
+  return cfg;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 1e9;
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+template <class Pred>
+bool wait_until(Pred&& done, int timeout_ms) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeout_ms);
+  while (std::chrono::steady_clock::now() < end) {
+    if (done()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return done();
+}
+
+}  // namespace
+
+TEST_CASE("frame sets: pictures within the tolerance go together, late and lagging cameras are left out", "[live]") {
+  using octocap::Candidate;
+  octocap::FrameSetOptions o;
+  o.tolerance_us = 8000;
+  o.max_wait_us = 16000;
+  // Four cameras 2 ms apart: one set, complete, at their mean time.
+  auto d = octocap::decide_frame_set({{true, 1000, 1000}, {true, 3000, 3000}, {true, 5000, 5000}, {true, 7000, 7000}},
+                                     7500, o);
+  CHECK(d.emit);
+  CHECK(d.take == std::vector<bool>{true, true, true, true});
+  CHECK(d.time_us == 4000);
+  // Camera 1's newest picture went into the last set and it delivers every 16 ms: its next one is awaited ...
+  d = octocap::decide_frame_set({{true, 21000, 21000}, {false, 0, 9000}, {true, 23000, 23000}, {true, 22000, 22000}},
+                                24000, o);
+  CHECK_FALSE(d.emit);
+  // ... but once it has been silent for max_wait (stalled, dropped, reconnecting), the set goes out without it.
+  d = octocap::decide_frame_set({{true, 21000, 21000}, {false, 0, 9000}, {true, 23000, 23000}, {true, 22000, 22000}},
+                                26000, o);
+  CHECK(d.emit);
+  CHECK(d.take == std::vector<bool>{true, false, true, true});
+  // A camera that never delivered anything is not waited for.
+  d = octocap::decide_frame_set({{true, 1000, 1000}, {false, 0, 0}}, 1500, o);
+  CHECK(d.emit);
+  CHECK(d.take == std::vector<bool>{true, false});
+  // A camera that lags by more than the tolerance is not mixed into the newer set; its picture is stale for good,
+  // and as it just delivered, its next (matching) picture is awaited.
+  d = octocap::decide_frame_set({{true, 40000, 40000}, {true, 41000, 41000}, {true, 30000, 30000}, {true, 42000, 42000}},
+                                42500, o);
+  CHECK(d.discard == std::vector<bool>{false, false, true, false});
+  CHECK_FALSE(d.emit);
+  // A known latency offset (camera 2 delivers 10 ms late) puts it back in.
+  o.offsets_us = {0, 0, -10000, 0};
+  d = octocap::decide_frame_set({{true, 40000, 40000}, {true, 41000, 41000}, {true, 30000, 30000}, {true, 42000, 42000}},
+                                42500, o);
+  CHECK(d.emit);
+  CHECK(d.take == std::vector<bool>{true, true, true, true});
+  // A picture replaced by a newer one keeps the set waiting only for cameras that deliver: here none is missing.
+  d = octocap::decide_frame_set({{false, 0, 0}, {false, 0, 0}}, 1000000, o);
+  CHECK_FALSE(d.emit);
+}
+
+TEST_CASE("live: four real views played as picture-folder cameras solve as the offline solve does", "[live][real]") {
+  // The real take's pictures (every 2nd frame, half size: what a lower-resolution camera gives; the session scales
+  // them to the calibration's pixels), four folders played as cameras at 10 Hz.
+  testing::TempDir dir;
+  std::vector<std::string> folders;
+  for (int c = 1; c <= 4; ++c) {
+    folders.push_back(dir.file("cam0" + std::to_string(c)));
+    fs::create_directories(folders.back());
+    const testing::Run r = testing::run_command("ffmpeg -loglevel error -i " + kVideos + "cam0" + std::to_string(c) +
+                                                ".mp4 -vf \"select=not(mod(n\\,2)),scale=544:960\" -vsync vfr -q:v 3 " +
+                                                folders.back() + "/%04d.jpg");
+    INFO(r.output);
+    REQUIRE(r.status == 0);
+  }
+  const octocap::Calibration calib = octocap::Calibration::load(kDemo + "/calibration/Calib_qualisys.toml");
+  octocap_live_config_t cfg;
+  octocap_live_config_init(&cfg);
+  cfg.picture_rate_hz = 10;
+  octocap::Live live(cfg, coco_session(), calib, folders);
+  octocap_detector_config_t det;
+  octocap_detector_config_init(&det);
+  std::snprintf(det.model, sizeof det.model, "%s", "movenet-lightning");
+  live.set_detector(det);
+  live.start();
+  std::vector<double> reprojection;
+  size_t frames = 0, with_person = 0, solved = 0;
+  int64_t last_index = -1;
+  while (std::optional<octocap::Frame> f = live.take(10000)) {  // until the folders played out
+    const octocap_frame_summary_t s = f->summary();
+    CHECK(s.frame_index > last_index);  // the newest first, never an old frame late
+    last_index = s.frame_index;
+    ++frames;
+    if (s.person_count == 0) continue;
+    ++with_person;
+    for (const octocap_joint_t& k : f->keypoints3d(0)) {
+      if (!k.valid) continue;
+      ++solved;
+      reprojection.push_back(k.reprojection_error_px);
+    }
+  }
+  const octocap_live_stats_t stats = live.stats();
+  INFO("frame sets " << stats.frame_sets << ", with a person " << stats.frames_with_person << ", incomplete "
+                     << stats.sets_incomplete << ", taken " << frames << ", median reprojection " << median(reprojection)
+                     << " px, capture " << stats.capture_ms << " ms, detect " << stats.detect_ms << " ms, latency p50 "
+                     << stats.latency_p50_ms << " ms");
+  CHECK(stats.finished == 1);
+  REQUIRE(frames >= 5);
+  CHECK(with_person >= 0.9 * frames);
+  CHECK(solved >= 0.9 * 17 * with_person);
+  CHECK(median(reprojection) <= 10.7);  // Pose2Sim's own median on this take
+  CHECK(stats.frame_sets >= frames);
+  for (uint32_t c = 0; c < 4; ++c) {
+    const octocap_camera_status_t cam = live.camera(c);
+    INFO("camera " << c << " grabbed " << cam.grabbed << " used " << cam.used << " dropped " << cam.dropped);
+    CHECK(cam.state == OCTOCAP_CAMERA_ENDED);
+    CHECK(cam.grabbed == 50);  // every picture of the folder was delivered
+    CHECK(cam.used + cam.dropped <= cam.grabbed);
+    CHECK(cam.used >= 1);
+    CHECK(cam.nominal_fps == 10);
+    CHECK(std::string(cam.name).size() > 0);
+  }
+}
+
+TEST_CASE("live: real videos as cameras are played at their own rate and solved", "[live][real]") {
+  const octocap::Calibration calib = octocap::Calibration::load(kDemo + "/calibration/Calib_qualisys.toml");
+  octocap_live_config_t cfg;
+  octocap_live_config_init(&cfg);
+  octocap::Live live(cfg, coco_session(), calib, demo_videos());
+  octocap_detector_config_t det;
+  octocap_detector_config_init(&det);
+  std::snprintf(det.model, sizeof det.model, "%s", "movenet-lightning");
+  live.set_detector(det);
+  live.start();
+  size_t with_person = 0;
+  while (std::optional<octocap::Frame> f = live.take(10000)) with_person += f->person_count() > 0;
+  CHECK(with_person >= 1);
+  for (uint32_t c = 0; c < 4; ++c) {
+    const octocap_camera_status_t cam = live.camera(c);
+    CHECK(cam.state == OCTOCAP_CAMERA_ENDED);
+    CHECK(cam.grabbed >= 95);  // the 100-frame files were read through (the last may race the end)
+    CHECK(cam.nominal_fps > 50);  // they say 60
+    CHECK(cam.used + cam.dropped <= cam.grabbed);
+  }
+}
+
+TEST_CASE("live: misuse and unopenable cameras are clear errors", "[live][misuse]") {
+  const octocap::Calibration calib = octocap::Calibration::load(kDemo + "/calibration/Calib_qualisys.toml");
+  octocap_live_config_t cfg;
+  octocap_live_config_init(&cfg);
+  const octocap_session_config_t scfg = coco_session();
+  std::vector<std::string> videos = demo_videos();
+  octocap_live_t* l = nullptr;
+  std::vector<const char*> specs;
+  for (const auto& v : videos) specs.push_back(v.c_str());
+  CHECK(octocap_live_create(&cfg, &scfg, calib.get(), specs.data(), 3, &l) == OCTOCAP_ERROR_CAMERA_MISMATCH);
+  CHECK(l == nullptr);
+  specs[2] = "/nonexistent/cam03.mp4";
+  CHECK(octocap_live_create(&cfg, &scfg, calib.get(), specs.data(), 4, &l) == OCTOCAP_ERROR_IO);
+  CHECK_THAT(octocap_last_error(), ContainsSubstring("/nonexistent/cam03.mp4"));
+  specs[2] = "ftp://example/cam";
+  CHECK(octocap_live_create(&cfg, &scfg, calib.get(), specs.data(), 4, &l) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  CHECK_THAT(octocap_last_error(), ContainsSubstring("ftp://"));
+  specs[2] = nullptr;
+  CHECK(octocap_live_create(&cfg, &scfg, calib.get(), specs.data(), 4, &l) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  octocap_live_config_t bad = cfg;
+  bad.struct_size = 7;
+  specs[2] = videos[2].c_str();
+  CHECK(octocap_live_create(&bad, &scfg, calib.get(), specs.data(), 4, &l) == OCTOCAP_ERROR_STRUCT_SIZE);
+  bad = cfg;
+  bad.picture_rate_hz = std::nanf("");
+  CHECK(octocap_live_create(&bad, &scfg, calib.get(), specs.data(), 4, &l) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+
+  // A network camera nobody serves: start fails, naming it, and nothing stays open.
+  cfg.open_timeout_ms = 1000;
+  specs[3] = "http://127.0.0.1:9/none.mjpg";
+  REQUIRE(octocap_live_create(&cfg, &scfg, calib.get(), specs.data(), 4, &l) == OCTOCAP_OK);
+  octocap_detector_config_t det;
+  octocap_detector_config_init(&det);
+  std::snprintf(det.model, sizeof det.model, "%s", "movenet-lightning");
+  REQUIRE(octocap_live_set_detector(l, &det) == OCTOCAP_OK);
+  CHECK(octocap_live_start(l) == OCTOCAP_ERROR_IO);
+  CHECK_THAT(octocap_last_error(), ContainsSubstring("http://127.0.0.1:9/none.mjpg"));
+  octocap_live_stats_t stats{};
+  stats.struct_size = sizeof stats;
+  REQUIRE(octocap_live_get_stats(l, &stats) == OCTOCAP_OK);
+  CHECK(stats.running == 0);
+  octocap_live_destroy(l);
+
+  // Queries before the first frame, start twice, stop twice, destroy while running.
+  specs[3] = videos[3].c_str();
+  REQUIRE(octocap_live_create(&cfg, &scfg, calib.get(), specs.data(), 4, &l) == OCTOCAP_OK);
+  octocap_frame_t* f = reinterpret_cast<octocap_frame_t*>(0x1);
+  CHECK(octocap_live_take_frame(l, 0, &f) == OCTOCAP_STATUS_TIMEOUT);
+  CHECK(f == nullptr);
+  CHECK(octocap_live_get_frame(l, &f) == OCTOCAP_ERROR_NO_RESULT);
+  CHECK(octocap_live_stop(l) == OCTOCAP_OK);  // stopping what never ran is fine
+  REQUIRE(octocap_live_set_detector(l, &det) == OCTOCAP_OK);
+  REQUIRE(octocap_live_start(l) == OCTOCAP_OK);
+  CHECK(octocap_live_start(l) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  CHECK(octocap_live_set_detector(l, &det) == OCTOCAP_ERROR_INVALID_ARGUMENT);  // not while running
+  octocap_camera_status_t cam{};
+  cam.struct_size = sizeof cam;
+  CHECK(octocap_live_get_camera_status(l, 4, &cam) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  REQUIRE(octocap_live_take_frame(l, 10000, &f) == OCTOCAP_OK);
+  octocap_frame_summary_t s{};
+  s.struct_size = sizeof s;
+  CHECK(octocap_frame_get_summary(f, &s) == OCTOCAP_OK);
+  CHECK(s.view_count == 4);
+  octocap_live_destroy(l);  // while running: stops first
+  CHECK(octocap_frame_get_summary(f, &s) == OCTOCAP_OK);  // the frame outlives the capture
+  octocap_frame_release(f);
+  CHECK(octocap_live_start(l) == OCTOCAP_ERROR_INVALID_HANDLE);
+  CHECK(octocap_live_start(nullptr) == OCTOCAP_ERROR_INVALID_HANDLE);
+  octocap_live_destroy(nullptr);
+}
+
+TEST_CASE("live: a network camera killed mid-run is reconnected while the other goes on", "[live][network]") {
+  testing::TempDir dir;
+  // Two of the real views as small MJPEG files (same aspect as calibrated: the session scales them), served by
+  // ffmpeg over HTTP on loopback, looping, at their own rate: two IP cameras.
+  const std::vector<std::string> sources = {kVideos + "cam01.mp4", kVideos + "cam02.mp4"};
+  std::vector<std::string> mjpeg;
+  for (size_t c = 0; c < 2; ++c) {
+    mjpeg.push_back(dir.file("cam" + std::to_string(c) + ".avi"));
+    const testing::Run r = testing::run_command("ffmpeg -loglevel error -y -i " + sources[c] +
+                                                " -vf scale=272:480 -c:v mjpeg -q:v 4 -an " + mjpeg.back());
+    INFO(r.output);
+    REQUIRE(r.status == 0);
+  }
+  const int base_port = 20000 + static_cast<int>(getpid() % 20000);
+  auto serve = [&](size_t c) {
+    const std::string url = "http://127.0.0.1:" + std::to_string(base_port + static_cast<int>(c)) + "/cam.mjpg";
+    return std::make_unique<testing::ChildProcess>(std::vector<std::string>{
+        "/usr/bin/ffmpeg", "-loglevel", "quiet", "-re", "-stream_loop", "-1", "-i", mjpeg[c], "-c:v", "copy", "-f",
+        "mpjpeg", "-listen", "1", url});
+  };
+  std::vector<std::unique_ptr<testing::ChildProcess>> servers;
+  for (size_t c = 0; c < 2; ++c) servers.push_back(serve(c));
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+
+  // The two cameras of the lab's calibration these views are.
+  const octocap::Calibration lab = octocap::Calibration::load(kDemo + "/calibration/Calib_qualisys.toml");
+  const octocap_camera_t two[2] = {lab.camera(0), lab.camera(1)};
+  octocap_calibration_t* raw = nullptr;
+  REQUIRE(octocap_calibration_create(two, 2, &raw) == OCTOCAP_OK);
+  const octocap::Calibration calib(raw);
+  octocap_live_config_t cfg;
+  octocap_live_config_init(&cfg);
+  cfg.read_timeout_ms = 1000;
+  cfg.reconnect_max_ms = 500;
+  std::vector<std::string> urls;
+  for (int c = 0; c < 2; ++c) urls.push_back("http://127.0.0.1:" + std::to_string(base_port + c) + "/cam.mjpg");
+  octocap::Live live(cfg, coco_session(), calib, urls);
+  octocap_detector_config_t det;
+  octocap_detector_config_init(&det);
+  std::snprintf(det.model, sizeof det.model, "%s", "movenet-lightning");
+  live.set_detector(det);
+  live.start();
+  auto solved = [&] { return live.stats().frames_with_person; };
+  REQUIRE(wait_until([&] { return solved() >= 5; }, 20000));
+
+  servers[1]->kill_now();  // camera 2's server dies
+  servers[1]->wait();
+  REQUIRE(wait_until([&] { return live.camera(1).state == OCTOCAP_CAMERA_RECONNECTING; }, 10000));
+  const uint64_t sets_while_down = live.stats().frame_sets;
+  REQUIRE(wait_until([&] { return live.stats().frame_sets > sets_while_down + 3; }, 10000));  // camera 1 goes on
+  CHECK(live.camera(0).state == OCTOCAP_CAMERA_STREAMING);
+
+  servers[1] = serve(1);  // and comes back
+  REQUIRE(wait_until([&] { return live.camera(1).state == OCTOCAP_CAMERA_STREAMING; }, 15000));
+  CHECK(live.camera(1).reconnects >= 1);
+  const uint64_t before = solved();
+  CHECK(wait_until([&] { return solved() >= before + 5; }, 20000));  // both views again: people solved again
+  const octocap_live_stats_t stats = live.stats();
+  CHECK(stats.sets_incomplete >= 1);  // the sets made while camera 2 was down
+  CHECK(stats.latency_p50_ms > 0);
+  live.stop();
+  CHECK(live.stats().running == 0);
+}
