@@ -60,44 +60,54 @@ bool wait_until(Pred&& done, int timeout_ms) {
 
 }  // namespace
 
-TEST_CASE("frame sets: pictures within the tolerance go together, late and lagging cameras are left out", "[live]") {
+TEST_CASE("frame sets: each camera's picture nearest the set's time, late and silent cameras left out", "[live]") {
   using octocap::Candidate;
+  using octocap::Picture;
   octocap::FrameSetOptions o;
-  o.tolerance_us = 8000;
-  o.max_wait_us = 16000;
-  // Four cameras 2 ms apart: one set, complete, at their mean time.
-  auto d = octocap::decide_frame_set({{true, 1000, 1000}, {true, 3000, 3000}, {true, 5000, 5000}, {true, 7000, 7000}},
-                                     7500, o);
+  o.tolerance_us = 8333;   // half a frame at 60 Hz
+  o.max_wait_us = 16667;   // a frame
+  auto cam = [](uint64_t seq, int64_t newest, int64_t previous) {
+    Candidate c;
+    c.newest = {seq, newest};
+    if (previous >= 0) c.previous = {seq - 1, previous};
+    c.last_us = newest;
+    return c;
+  };
+  // Four free-running 60 Hz cameras at phases 0, 4, 8 and 12 ms: no half-frame window holds their newest pictures,
+  // but the newest and the one before always give each a picture within half a frame of the oldest newest (16 ms).
+  auto d = octocap::decide_frame_set({cam(2, 16000, 0), cam(2, 20000, 4000), cam(2, 24000, 8000), cam(2, 28000, 12000)},
+                                     30000, o);
   CHECK(d.emit);
-  CHECK(d.take == std::vector<bool>{true, true, true, true});
-  CHECK(d.time_us == 4000);
-  // Camera 1's newest picture went into the last set and it delivers every 16 ms: its next one is awaited ...
-  d = octocap::decide_frame_set({{true, 21000, 21000}, {false, 0, 9000}, {true, 23000, 23000}, {true, 22000, 22000}},
-                                24000, o);
+  CHECK(d.time_us == 16000);
+  CHECK(d.take == std::vector<uint64_t>{2, 2, 2, 1});  // 16, 20, 24 (8 ms either way: the newer), 12
+  // Camera 1's pictures were all used; it delivers every 16.7 ms: the set waits for it ...
+  Candidate used = cam(2, 20000, -1);
+  used.newest = Picture{};
+  used.last_us = 20000;
+  d = octocap::decide_frame_set({cam(3, 33000, -1), used, cam(3, 41000, -1), cam(3, 45000, -1)}, 36000, o);
   CHECK_FALSE(d.emit);
   // ... but once it has been silent for max_wait (stalled, dropped, reconnecting), the set goes out without it.
-  d = octocap::decide_frame_set({{true, 21000, 21000}, {false, 0, 9000}, {true, 23000, 23000}, {true, 22000, 22000}},
-                                26000, o);
+  d = octocap::decide_frame_set({cam(3, 33000, -1), used, cam(3, 37000, -1), cam(3, 39000, -1)}, 40000, o);
   CHECK(d.emit);
-  CHECK(d.take == std::vector<bool>{true, false, true, true});
+  CHECK(d.take == std::vector<uint64_t>{3, 0, 3, 3});
   // A camera that never delivered anything is not waited for.
-  d = octocap::decide_frame_set({{true, 1000, 1000}, {false, 0, 0}}, 1500, o);
+  Candidate never;
+  d = octocap::decide_frame_set({cam(1, 1000, -1), never}, 1500, o);
   CHECK(d.emit);
-  CHECK(d.take == std::vector<bool>{true, false});
-  // A camera that lags by more than the tolerance is not mixed into the newer set; its picture is stale for good,
-  // and as it just delivered, its next (matching) picture is awaited.
-  d = octocap::decide_frame_set({{true, 40000, 40000}, {true, 41000, 41000}, {true, 30000, 30000}, {true, 42000, 42000}},
-                                42500, o);
-  CHECK(d.discard == std::vector<bool>{false, false, true, false});
-  CHECK_FALSE(d.emit);
-  // A known latency offset (camera 2 delivers 10 ms late) puts it back in.
-  o.offsets_us = {0, 0, -10000, 0};
-  d = octocap::decide_frame_set({{true, 40000, 40000}, {true, 41000, 41000}, {true, 30000, 30000}, {true, 42000, 42000}},
-                                42500, o);
+  CHECK(d.take == std::vector<uint64_t>{1, 0});
+  // A camera whose newest picture is older than max_wait does not drag the set's time back: it is left out.
+  d = octocap::decide_frame_set({cam(9, 100000, 83000), cam(9, 104000, 87000), cam(2, 20000, 3000)}, 105000, o);
   CHECK(d.emit);
-  CHECK(d.take == std::vector<bool>{true, true, true, true});
-  // A picture replaced by a newer one keeps the set waiting only for cameras that deliver: here none is missing.
-  d = octocap::decide_frame_set({{false, 0, 0}, {false, 0, 0}}, 1000000, o);
+  CHECK(d.time_us == 100000);
+  CHECK(d.take == std::vector<uint64_t>{9, 9, 0});
+  // A known latency offset (camera 2 delivers 30 ms late) puts it back in.
+  o.offsets_us = {0, 0, 30000};
+  o.max_wait_us = 100000;
+  d = octocap::decide_frame_set({cam(9, 100000, 83000), cam(9, 104000, 87000), cam(5, 131000, 114000)}, 132000, o);
+  CHECK(d.emit);
+  CHECK(d.take == std::vector<uint64_t>{9, 9, 5});
+  // Nothing anywhere: nothing to do.
+  d = octocap::decide_frame_set({never, never}, 1000000, o);
   CHECK_FALSE(d.emit);
 }
 

@@ -4,6 +4,7 @@
 
 #include "octocap/octocap.h"
 #include "detect_command.h"
+#include "live_command.h"
 #include "solve_command.h"
 
 namespace {
@@ -69,6 +70,27 @@ int main(int argc, char** argv) {
   dc->add_flag("--quiet", detect.quiet, "No progress on stderr");
   add_detector_options(dc, detect.detector);
 
+  LiveOptions live;
+  CLI::App* lv = app.add_subcommand("live", "Capture live from cameras (devices, rtsp://, http://, videos or picture folders as cameras) into 3D");
+  lv->add_option("--camera", live.cameras, "A camera, once per camera in calibration order: /dev/videoN or N, rtsp://..., http://... (MJPEG), a video file, a picture folder")->required();
+  lv->add_option("--calibration", live.calibration, "Calibration TOML (anipose / Pose2Sim)")->required()->check(CLI::ExistingFile);
+  lv->add_option("--duration", live.duration_s, "Stop after this many seconds (0: when the cameras end, or Ctrl-C)")->capture_default_str();
+  lv->add_option("--picture-rate", live.picture_rate_hz, "Rate of picture-folder cameras, and the rate written to the TRC")->check(CLI::PositiveNumber)->capture_default_str();
+  lv->add_option("--output", live.output, "Write the take as TRC");
+  lv->add_option("--csv", live.csv, "Also write a CSV (calibration world frame)");
+  lv->add_option("--bvh", live.bvh, "Also write the bone animation as BVH");
+  lv->add_option("--method", live.method, "3D method")->check(CLI::IsMember({"auto", "subdivision", "triangulation"}))->capture_default_str();
+  lv->add_option("--filter", live.filter, "Temporal filter")->check(CLI::IsMember({"none", "oneeuro"}))->capture_default_str();
+  lv->add_flag("--publish", live.publish, "Stream every frame over DDS");
+  lv->add_option("--publish-qos", live.publish_qos, "live or record")->check(CLI::IsMember({"live", "record"}))->capture_default_str();
+  lv->add_option("--domain", live.domain, "DDS domain id")->check(CLI::Range(0, 232))->capture_default_str();
+  lv->add_option("--topic", live.topic, "DDS topic base name")->capture_default_str();
+  lv->add_option("--source-id", live.source_id, "This rig's id on the topic")->capture_default_str();
+  lv->add_option("--vmc-port", live.vmc_port, "Also send VMC protocol (OSC/UDP) to this port (VMC's usual: 39539)")->check(CLI::Range(0, 65535));
+  lv->add_option("--vmc-host", live.vmc_host, "VMC receiver host")->capture_default_str();
+  lv->add_flag("--quiet", live.quiet, "No status line on stderr");
+  add_detector_options(lv, live.detector);
+
   CLI::App* lc = app.add_subcommand("layouts", "List the keypoint layouts and their keypoints");
 
   CLI11_PARSE(app, argc, argv);
@@ -78,6 +100,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (dc->parsed()) return run_detect(detect);
+  if (lv->parsed()) return run_live(live);
   if (lc->parsed()) return run_layouts();
   return 0;
 }

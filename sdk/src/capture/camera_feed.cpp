@@ -48,21 +48,28 @@ void CameraFeed::stop() {
   if (status_.state != FeedState::ended && status_.state != FeedState::failed) status_.state = FeedState::stopped;
 }
 
-bool CameraFeed::take_newer(uint64_t after, CapturedFrame& out) {
+Candidate CameraFeed::candidate(uint64_t after) const {
   const std::lock_guard<std::mutex> lock(mutex_);
-  if (!has_latest_ || latest_.sequence <= after) return false;
-  out = latest_;  // cv::Mat shares the pixels: the feed writes each picture into a fresh buffer
-  if (!latest_taken_) ++status_.used;
-  latest_taken_ = true;
-  return true;
+  Candidate c;
+  const CapturedFrame& newest = slots_[0].frame;
+  const CapturedFrame& previous = slots_[1].frame;
+  c.last_us = newest.sequence ? newest.grab_us : 0;
+  if (newest.sequence > after && !slots_[0].used) c.newest = {newest.sequence, newest.grab_us};
+  if (previous.sequence > after && !slots_[1].used) c.previous = {previous.sequence, previous.grab_us};
+  if (!c.newest.sequence && c.previous.sequence) std::swap(c.newest, c.previous);
+  return c;
 }
 
-bool CameraFeed::peek(int64_t& grab_us, uint64_t& sequence) const {
+bool CameraFeed::take(uint64_t sequence, CapturedFrame& out) {
   const std::lock_guard<std::mutex> lock(mutex_);
-  if (!has_latest_) return false;
-  grab_us = latest_.grab_us;
-  sequence = latest_.sequence;
-  return true;
+  for (Slot& s : slots_)
+    if (s.frame.sequence == sequence && sequence != 0) {
+      out = s.frame;  // cv::Mat shares the pixels: the feed writes each picture into a fresh buffer
+      if (!s.used) ++status_.used;
+      s.used = true;
+      return true;
+    }
+  return false;
 }
 
 FeedStatus CameraFeed::status() const {
@@ -142,17 +149,16 @@ void CameraFeed::run() {
     const int64_t now = monotonic_us();
     {
       const std::lock_guard<std::mutex> lock(mutex_);
-      if (has_latest_ && !latest_taken_) ++status_.dropped;
-      latest_.image = image;
-      latest_.grab_us = now;
-      latest_.stream_us = stream_us;
-      latest_.sequence = ++sequence_;
-      has_latest_ = true;
-      latest_taken_ = false;
+      if (!slots_[1].used) ++status_.dropped;  // pushed out unused
+      slots_[1] = std::move(slots_[0]);
+      slots_[0].frame = CapturedFrame{image, now, stream_us, ++sequence_};
+      slots_[0].used = false;
       ++status_.grabbed;
       if (last_grab_us > 0 && now > last_grab_us) {
-        const double instant = 1e6 / static_cast<double>(now - last_grab_us);
-        status_.fps = status_.fps > 0 ? 0.9 * status_.fps + 0.1 * instant : instant;
+        // Smoothed on the interval, not on its inverse: a burst of catch-up reads must not read as a faster camera.
+        const double dt = static_cast<double>(now - last_grab_us);
+        mean_interval_us_ = mean_interval_us_ > 0 ? 0.9 * mean_interval_us_ + 0.1 * dt : dt;
+        status_.fps = 1e6 / mean_interval_us_;
       }
       last_grab_us = now;
     }

@@ -1,6 +1,7 @@
 // One camera on its own thread: opened, read as fast as it delivers (files and folders at their own rate), every
-// picture stamped at grab on the monotonic clock. Only the newest picture is kept (a mailbox of one): a consumer
-// that is slower drops the ones in between, counted, so latency stays bounded. A live camera that breaks is
+// picture stamped at grab on the monotonic clock. Only the newest two pictures are kept (two, so that software sync
+// can pick the one nearer a set's time): a consumer that is slower drops the ones in between, counted, so latency
+// stays bounded. A live camera that breaks is
 // reopened with back-off while the others go on.
 #pragma once
 #include <atomic>
@@ -15,6 +16,7 @@
 
 #include "capture/camera_spec.h"
 #include "capture/feed_status.h"
+#include "capture/frame_set.h"
 #include "capture/frame_source.h"
 
 namespace octocap {
@@ -37,10 +39,10 @@ class CameraFeed {
   // Opens the source on the calling thread (Error(io) naming the camera when it cannot), then starts reading.
   void start();
   void stop();
-  // The newest picture if it is newer than `after` (a sequence number); it counts as used.
-  bool take_newer(uint64_t after, CapturedFrame& out);
-  // The newest picture's grab time and sequence without taking it (false when none).
-  bool peek(int64_t& grab_us, uint64_t& sequence) const;
+  // The two newest pictures newer than `after` (a sequence number), for frame-set assembly.
+  Candidate candidate(uint64_t after) const;
+  // Picture `sequence` if it is still kept; it counts as used.
+  bool take(uint64_t sequence, CapturedFrame& out);
   FeedStatus status() const;
   double nominal_fps() const { return nominal_fps_.load(); }
   const CameraSpec& spec() const { return spec_; }
@@ -58,10 +60,13 @@ class CameraFeed {
   std::atomic<bool> stop_{false};
   mutable std::mutex mutex_;
   std::condition_variable wake_;  // interrupts back-off and pacing sleeps on stop
-  CapturedFrame latest_;
-  bool has_latest_ = false;
-  bool latest_taken_ = true;
+  struct Slot {
+    CapturedFrame frame;
+    bool used = true;  // an empty slot counts as used: nothing to drop
+  };
+  Slot slots_[2];  // [0] the newest, [1] the one before
   uint64_t sequence_ = 0;
+  double mean_interval_us_ = 0;
   FeedStatus status_;
 };
 

@@ -1,5 +1,6 @@
-// Software sync: which cameras' newest pictures make one frame set. Pure logic on timestamps, so it is tested
-// with known ones; the live engine feeds it each camera's newest unused picture.
+// Software sync: which of each camera's newest pictures make one frame set. Pure logic on timestamps, so it is tested
+// with known ones; the live engine feeds it, per camera, the newest two pictures not used yet (a camera running at
+// its own phase always has one of them within half a frame period of any moment between them).
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -7,28 +8,33 @@
 namespace octocap {
 
 struct FrameSetOptions {
-  int64_t tolerance_us = 16667;      // pictures within this of the set's time belong to it (default: half a frame at 30 Hz)
-  int64_t max_wait_us = 33333;       // a camera silent this long is not waited for (default: a frame at 30 Hz)
-  std::vector<int64_t> offsets_us;   // per camera, subtracted from its grab times (a camera known to deliver late)
+  int64_t tolerance_us = 16667;     // pictures within this of the set's time belong to it (default: half a frame at 30 Hz)
+  int64_t max_wait_us = 33333;      // a camera silent this long is not waited for (default: a frame at 30 Hz)
+  std::vector<int64_t> offsets_us;  // per camera, subtracted from its grab times (a camera known to deliver late)
+};
+
+struct Picture {
+  uint64_t sequence = 0;  // 0: none
+  int64_t time_us = 0;    // grab time (monotonic, µs)
 };
 
 struct Candidate {
-  bool present = false;  // the camera has a picture not used yet
-  int64_t time_us = 0;   // its grab time (monotonic, µs)
-  int64_t last_us = 0;   // grab time of its newest picture, used or not (0: it never delivered one)
+  Picture newest;         // the newest picture not used yet (sequence 0: none)
+  Picture previous;       // the one before it, if not used yet
+  int64_t last_us = 0;    // grab time of the camera's newest picture, used or not (0: it never delivered one)
 };
 
 struct FrameSetDecision {
   bool emit = false;
-  std::vector<bool> take;      // per camera: in this set
-  std::vector<bool> discard;   // per camera: too old for this set and any later one (counted as dropped)
-  int64_t time_us = 0;         // the set's time: the mean of its pictures' corrected times
+  std::vector<uint64_t> take;  // per camera: the picture in this set (0: the camera is left out)
+  int64_t time_us = 0;         // the set's time (corrected clock)
 };
 
-// Emits when every camera has a picture within tolerance of the newest one, or when the cameras missing from the set
-// are not about to deliver (silent for max_wait: stalled, dropped, reconnecting): those are left out of that set.
-// A camera that delivers keeps being waited for at most one of its frame periods, so no set waits without bound,
-// and a dead camera never holds the others back.
+// The set's time is the oldest of the cameras' newest pictures (cameras silent for max_wait aside): every camera
+// has a picture at or after it, and each takes its picture nearest to it, if within the tolerance. Emits when every
+// camera is in, or when the cameras left out are not about to deliver (silent for max_wait: stalled, dropped,
+// reconnecting). A camera that delivers is waited for at most one of its frame periods, so no set waits without
+// bound and a dead camera never holds the others back.
 FrameSetDecision decide_frame_set(const std::vector<Candidate>& cameras, int64_t now_us, const FrameSetOptions& options);
 
 }  // namespace octocap

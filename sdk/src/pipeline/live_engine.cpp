@@ -120,7 +120,6 @@ void LiveEngine::run() {
   const size_t n = feeds_.size();
   std::vector<uint64_t> last_used(n, 0);
   std::vector<Candidate> candidates(n);
-  std::vector<uint64_t> sequence(n, 0);
   std::vector<CapturedFrame> frames(n);
   std::vector<bool> present(n);
   while (!stop_) {
@@ -133,10 +132,8 @@ void LiveEngine::run() {
     if (stop_) break;
     bool any = false, all_done = true;
     for (size_t c = 0; c < n; ++c) {
-      int64_t grab = 0;
-      candidates[c] = Candidate{};
-      if (feeds_[c]->peek(grab, sequence[c])) candidates[c] = {sequence[c] > last_used[c], grab, grab};
-      any = any || candidates[c].present;
+      candidates[c] = feeds_[c]->candidate(last_used[c]);
+      any = any || candidates[c].newest.sequence != 0;
       const FeedState st = feeds_[c]->status().state;
       all_done = all_done && (st == FeedState::ended || st == FeedState::failed);
     }
@@ -145,14 +142,23 @@ void LiveEngine::run() {
       continue;
     }
     const FrameSetDecision d = decide_frame_set(candidates, monotonic_us(), sync_);
-    for (size_t c = 0; c < n; ++c)
-      if (d.discard[c]) last_used[c] = sequence[c];  // left for a newer one: the feed counts it as dropped
-    if (!d.emit) continue;
+    if (!d.emit) {
+      if (all_done) {
+        // Nothing more will come: what is left goes out as it is.
+      } else {
+        continue;
+      }
+    }
     bool complete = true;
     for (size_t c = 0; c < n; ++c) {
-      present[c] = d.take[c] && feeds_[c]->take_newer(last_used[c], frames[c]);
+      present[c] = d.take[c] != 0 && feeds_[c]->take(d.take[c], frames[c]);
       if (present[c]) last_used[c] = frames[c].sequence;
       complete = complete && present[c];
+    }
+    if (std::none_of(present.begin(), present.end(), [](bool p) { return p; })) {
+      // Ended cameras whose last pictures match no set: they are done.
+      for (size_t c = 0; c < n; ++c) last_used[c] = std::max(last_used[c], candidates[c].newest.sequence);
+      continue;
     }
     solve_set(frames, present, d.time_us);
     const std::lock_guard<std::mutex> lock(mutex_);
@@ -201,8 +207,9 @@ void LiveEngine::solve_set(const std::vector<CapturedFrame>& frames, const std::
     if (latencies_ms_.size() < kLatencyWindow) latencies_ms_.push_back(latency);
     else latencies_ms_[latency_next_++ % kLatencyWindow] = latency;
     if (last_solved_us_ > 0 && t1 > last_solved_us_) {
-      const double instant = 1e6 / static_cast<double>(t1 - last_solved_us_);
-      stats_.fps = stats_.fps > 0 ? 0.9 * stats_.fps + 0.1 * instant : instant;
+      const double dt = static_cast<double>(t1 - last_solved_us_);
+      mean_interval_us_ = mean_interval_us_ > 0 ? 0.9 * mean_interval_us_ + 0.1 * dt : dt;
+      stats_.fps = 1e6 / mean_interval_us_;
     }
     last_solved_us_ = t1;
   }

@@ -93,6 +93,7 @@ class LiveEngine {
   std::vector<double> latencies_ms_;  // ring of the last ones
   size_t latency_next_ = 0;
   int64_t last_solved_us_ = 0;
+  double mean_interval_us_ = 0;
 };
 
 }  // namespace octocap

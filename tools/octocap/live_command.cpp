@@ -1,0 +1,127 @@
+// octocap live: cameras in, 3D out while the person moves; a status line each second, the per-stage table at the end.
+#include "live_command.h"
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "octocap/octocap.hpp"
+
+namespace {
+
+std::atomic<bool> g_interrupted{false};
+extern "C" void on_interrupt(int) { g_interrupted = true; }
+
+void log_to_stderr(octocap_log_level_t level, const char* message, void*) {
+  static const char* names[] = {"debug", "info", "warning", "error"};
+  std::fprintf(stderr, "\noctocap %s: %s\n", names[level], message);
+}
+
+const char* state_name(octocap_camera_state_t s) {
+  static const char* names[] = {"stopped", "connecting", "streaming", "reconnecting", "ended", "failed"};
+  return s >= 0 && s <= 5 ? names[s] : "?";
+}
+
+int live(const LiveOptions& o) {
+  octocap_set_log_callback(log_to_stderr, OCTOCAP_LOG_WARNING, nullptr);
+  const octocap::Calibration calib = octocap::Calibration::load(o.calibration);
+  octocap_live_config_t cfg;
+  octocap_live_config_init(&cfg);
+  cfg.picture_rate_hz = static_cast<float>(o.picture_rate_hz);
+  octocap_session_config_t scfg;
+  octocap_session_config_init(&scfg);
+  scfg.layout = OCTOCAP_LAYOUT_COCO_17;  // the shipped models' layout
+  scfg.method = o.method == "triangulation" ? OCTOCAP_METHOD_TRIANGULATION
+                : o.method == "subdivision"  ? OCTOCAP_METHOD_SUBDIVISION
+                                             : OCTOCAP_METHOD_AUTO;
+  scfg.filter = o.filter == "none" ? OCTOCAP_FILTER_NONE : OCTOCAP_FILTER_ONE_EURO;
+  scfg.vmc_port = o.vmc_port;
+  std::snprintf(scfg.vmc_host, sizeof scfg.vmc_host, "%s", o.vmc_host.c_str());
+  if (o.publish) {
+    scfg.stream_enable = 1;
+    scfg.stream_domain_id = o.domain;
+    scfg.stream_qos = o.publish_qos == "record" ? OCTOCAP_QOS_RECORD : OCTOCAP_QOS_LIVE;
+    scfg.stream_source_id = o.source_id;
+    std::snprintf(scfg.stream_topic, sizeof scfg.stream_topic, "%s", o.topic.c_str());
+  }
+  octocap::Live capture(cfg, scfg, calib, o.cameras);
+  capture.set_detector(o.detector.config());
+  octocap_up_axis_t up = OCTOCAP_UP_Y;
+  {
+    // The up axis the session decided from the cameras, for the TRC.
+    octocap::Session probe(scfg, calib);
+    up = probe.up_axis();
+  }
+  std::vector<octocap::MotionWriter> writers;
+  // A live take's rate is the cameras'; the files say the nominal one, the frames keep their real timestamps.
+  const double rate = o.picture_rate_hz;
+  if (!o.output.empty()) writers.emplace_back(o.output, OCTOCAP_MOTION_TRC, OCTOCAP_LAYOUT_COCO_17, up, rate);
+  if (!o.csv.empty()) writers.emplace_back(o.csv, OCTOCAP_MOTION_CSV, OCTOCAP_LAYOUT_COCO_17, up, rate);
+  if (!o.bvh.empty()) writers.emplace_back(o.bvh, OCTOCAP_MOTION_BVH, OCTOCAP_LAYOUT_COCO_17, up, rate);
+
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
+  capture.start();
+  const auto start = std::chrono::steady_clock::now();
+  auto last_status = start;
+  uint64_t taken = 0;
+  for (;;) {
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (g_interrupted || (o.duration_s > 0 && elapsed >= o.duration_s)) break;
+    std::optional<octocap::Frame> frame = capture.take(200);
+    if (frame) {
+      ++taken;
+      for (octocap::MotionWriter& w : writers) w.add(*frame, 0);
+    }
+    const octocap_live_stats_t s = capture.stats();
+    if (!frame && s.finished) break;  // every camera played out
+    if (!o.quiet && std::chrono::steady_clock::now() - last_status >= std::chrono::seconds(1)) {
+      last_status = std::chrono::steady_clock::now();
+      std::fprintf(stderr, "\r%6.1f s  solved %5.1f fps  latency p50 %5.0f ms p99 %5.0f ms  cameras", elapsed, s.fps,
+                   s.latency_p50_ms, s.latency_p99_ms);
+      for (uint32_t c = 0; c < s.camera_count; ++c) {
+        const octocap_camera_status_t cam = capture.camera(c);
+        std::fprintf(stderr, " %s %.0f fps%s", cam.name, cam.fps,
+                     cam.state == OCTOCAP_CAMERA_RECONNECTING ? " (reconnecting)" : "");
+      }
+      std::fprintf(stderr, "   ");
+    }
+  }
+  capture.stop();
+  if (!o.quiet) std::fprintf(stderr, "\n");
+  for (octocap::MotionWriter& w : writers) w.close();
+  const octocap_live_stats_t s = capture.stats();
+  std::printf("octocap live: %u cameras, %llu frame sets solved (%llu with a person, %llu without every camera), "
+              "%llu frames taken\n",
+              s.camera_count, static_cast<unsigned long long>(s.frame_sets),
+              static_cast<unsigned long long>(s.frames_with_person), static_cast<unsigned long long>(s.sets_incomplete),
+              static_cast<unsigned long long>(taken));
+  std::printf("  per frame: image collection %.1f ms, 2D detection %.1f ms, 3D + rig %.2f ms, hand-over %.3f ms\n",
+              s.capture_ms, s.detect_ms, s.solve_ms, s.publish_ms);
+  std::printf("  latency (grab to frame): p50 %.1f ms, p99 %.1f ms; %.1f frames/s\n", s.latency_p50_ms,
+              s.latency_p99_ms, s.fps);
+  for (uint32_t c = 0; c < s.camera_count; ++c) {
+    const octocap_camera_status_t cam = capture.camera(c);
+    std::printf("  camera %-10s %-12s %6llu frames, %6llu used, %6llu dropped, reconnects %llu, %.1f fps (says %.1f)\n",
+                cam.name, state_name(cam.state), static_cast<unsigned long long>(cam.grabbed),
+                static_cast<unsigned long long>(cam.used), static_cast<unsigned long long>(cam.dropped),
+                static_cast<unsigned long long>(cam.reconnects), cam.fps, cam.nominal_fps);
+  }
+  if (!o.output.empty()) std::printf("  wrote %s\n", o.output.c_str());
+  return 0;
+}
+
+}  // namespace
+
+int run_live(const LiveOptions& options) {
+  try {
+    return live(options);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "octocap live: error: %s\n", e.what());
+    return 1;
+  }
+}
