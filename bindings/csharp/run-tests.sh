@@ -13,6 +13,7 @@ mcs -langversion:7.2 -unsafe -target:library -out:"$OUT/Octocap.Tests.dll" -r:"$
   "$HERE"/tests/*.cs
 export LD_LIBRARY_PATH="$BUILD_DIR/sdk${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 export OCTOCAP_SAMPLE_DIR="$ROOT/data/sample"
+export OCTOCAP_SOURCE_DIR="$ROOT"
 export OCTOCAP_ABI_DUMP="$BUILD_DIR/bindings/csharp/native/octocap-abi-dump"
 # Streaming tests stay on loopback, with no multicast.
 export CYCLONEDDS_URI='<CycloneDDS><Domain Id="any"><General><Interfaces><NetworkInterface name="lo"/></Interfaces><AllowMulticast>false</AllowMulticast></General><Discovery><Peers><Peer address="127.0.0.1"/></Peers><ParticipantIndex>auto</ParticipantIndex><MaxAutoParticipantIndex>50</MaxAutoParticipantIndex></Discovery></Domain></CycloneDDS>'

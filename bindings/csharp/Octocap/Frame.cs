@@ -3,8 +3,9 @@ using System.Runtime.InteropServices;
 
 namespace Octocap
 {
-    /// <summary>Anything that hands out solved frames: a <see cref="Session"/> (its latest frame), a
-    /// <see cref="Subscriber"/> (the next received one). Engine drivers read any of them the same way.</summary>
+    /// <summary>Anything that hands out solved frames: a <see cref="Session"/> or a <see cref="Live"/> capture (their
+    /// newest frame: several drivers may share one), a <see cref="Subscriber"/> (the next received frame: it is taken,
+    /// so give each driver its own subscriber). Engine drivers read any of them the same way.</summary>
     public interface IFrameSource
     {
         /// <summary>A new frame, or null when there is none (nothing solved yet, nothing arrived). The caller

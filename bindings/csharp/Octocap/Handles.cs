@@ -39,6 +39,13 @@ namespace Octocap
         protected override bool ReleaseHandle() { NativeMethods.octocap_frame_release(handle); return true; }
     }
 
+    public sealed class LiveHandle : SafeHandle
+    {
+        public LiveHandle() : base(IntPtr.Zero, true) { }
+        public override bool IsInvalid => handle == IntPtr.Zero;
+        protected override bool ReleaseHandle() { NativeMethods.octocap_live_destroy(handle); return true; }
+    }
+
     public sealed class SubscriberHandle : SafeHandle
     {
         public SubscriberHandle() : base(IntPtr.Zero, true) { }

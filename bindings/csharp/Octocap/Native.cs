@@ -314,6 +314,67 @@ namespace Octocap
         public uint HasDefinition;
     }
 
+    /// <summary>octocap_live_config_t. Start from <see cref="LiveConfig.Default"/>.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct LiveConfig
+    {
+        public uint StructSize;
+        public uint SyncToleranceUs;
+        public uint MaxWaitUs;
+        public uint OpenTimeoutMs;
+        public uint ReadTimeoutMs;
+        public uint ReconnectMaxMs;
+        public float PictureRateHz;
+
+        public static LiveConfig Default
+        {
+            get
+            {
+                var c = new LiveConfig();
+                OctocapException.Check(NativeMethods.octocap_live_config_defaults(ref c, (uint)Marshal.SizeOf(typeof(LiveConfig))));
+                return c;
+            }
+        }
+    }
+
+    /// <summary>octocap_live_stats_t: times are means over the frames solved so far.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct LiveStats
+    {
+        public uint StructSize;
+        public uint Running;
+        public uint Finished;
+        public uint CameraCount;
+        public ulong FrameSets;
+        public ulong FramesWithPerson;
+        public ulong SetsIncomplete;
+        public ulong FramesNotTaken;
+        public float Fps;
+        public float CaptureMs;
+        public float DetectMs;
+        public float SolveMs;
+        public float PublishMs;
+        public float LatencyP50Ms;
+        public float LatencyP99Ms;
+    }
+
+    public enum CameraState : int { Stopped = 0, Connecting = 1, Streaming = 2, Reconnecting = 3, Ended = 4, Failed = 5 }
+
+    /// <summary>octocap_camera_status_t.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct CameraStatus
+    {
+        public uint StructSize;
+        public CameraState State;
+        public ulong Grabbed;
+        public ulong Used;
+        public ulong Dropped;
+        public ulong Reconnects;
+        public float Fps;
+        public float NominalFps;
+        public Name32 Name;
+    }
+
     [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
     internal delegate void NativeLogCallback(LogLevel level, IntPtr message, IntPtr user);
 
@@ -383,6 +444,16 @@ namespace Octocap
         [DllImport(Lib)] internal static extern Result octocap_recording_layout(RecordingHandle rec, out Layout layout);
         [DllImport(Lib)] internal static extern Result octocap_recording_read_frame(RecordingHandle rec, uint frame, Keypoint2D* keypoints, uint capacity, out uint keypointCount, uint* peoplePerView, uint viewCount);
 
+        [DllImport(Lib)] internal static extern Result octocap_live_config_defaults(ref LiveConfig cfg, uint structSize);
+        [DllImport(Lib)] internal static extern Result octocap_live_create(ref LiveConfig cfg, ref SessionConfig sessionCfg, CalibrationHandle calib, IntPtr[] cameras, uint count, out LiveHandle live);
+        [DllImport(Lib)] internal static extern Result octocap_live_set_detector(LiveHandle live, ref DetectorConfig cfg);
+        [DllImport(Lib)] internal static extern Result octocap_live_start(LiveHandle live);
+        [DllImport(Lib)] internal static extern Result octocap_live_stop(LiveHandle live);
+        [DllImport(Lib)] internal static extern void octocap_live_destroy(IntPtr live);
+        [DllImport(Lib)] internal static extern Result octocap_live_take_frame(LiveHandle live, int timeoutMs, out FrameHandle frame);
+        [DllImport(Lib)] internal static extern Result octocap_live_get_frame(LiveHandle live, out FrameHandle frame);
+        [DllImport(Lib)] internal static extern Result octocap_live_get_stats(LiveHandle live, ref LiveStats stats);
+        [DllImport(Lib)] internal static extern Result octocap_live_get_camera_status(LiveHandle live, uint index, ref CameraStatus status);
         [DllImport(Lib)] internal static extern Result octocap_subscriber_config_defaults(ref SubscriberConfig cfg, uint structSize);
         [DllImport(Lib)] internal static extern Result octocap_subscriber_create(ref SubscriberConfig cfg, out SubscriberHandle sub);
         [DllImport(Lib)] internal static extern void octocap_subscriber_destroy(IntPtr sub);

@@ -84,6 +84,23 @@ static void layout(void) {
   FIELD(octocap_person_t, keypoints_total); FIELD(octocap_person_t, joints_solved);
   FIELD(octocap_person_t, views_with_person); FIELD(octocap_person_t, mean_reprojection_error_px);
   FIELD(octocap_person_t, confidence);
+  SIZE(octocap_live_config_t);
+  FIELD(octocap_live_config_t, struct_size); FIELD(octocap_live_config_t, sync_tolerance_us);
+  FIELD(octocap_live_config_t, max_wait_us); FIELD(octocap_live_config_t, open_timeout_ms);
+  FIELD(octocap_live_config_t, read_timeout_ms); FIELD(octocap_live_config_t, reconnect_max_ms);
+  FIELD(octocap_live_config_t, picture_rate_hz);
+  SIZE(octocap_live_stats_t);
+  FIELD(octocap_live_stats_t, struct_size); FIELD(octocap_live_stats_t, running); FIELD(octocap_live_stats_t, finished);
+  FIELD(octocap_live_stats_t, camera_count); FIELD(octocap_live_stats_t, frame_sets);
+  FIELD(octocap_live_stats_t, frames_with_person); FIELD(octocap_live_stats_t, sets_incomplete);
+  FIELD(octocap_live_stats_t, frames_not_taken); FIELD(octocap_live_stats_t, fps); FIELD(octocap_live_stats_t, capture_ms);
+  FIELD(octocap_live_stats_t, detect_ms); FIELD(octocap_live_stats_t, solve_ms); FIELD(octocap_live_stats_t, publish_ms);
+  FIELD(octocap_live_stats_t, latency_p50_ms); FIELD(octocap_live_stats_t, latency_p99_ms);
+  SIZE(octocap_camera_status_t);
+  FIELD(octocap_camera_status_t, struct_size); FIELD(octocap_camera_status_t, state);
+  FIELD(octocap_camera_status_t, grabbed); FIELD(octocap_camera_status_t, used); FIELD(octocap_camera_status_t, dropped);
+  FIELD(octocap_camera_status_t, reconnects); FIELD(octocap_camera_status_t, fps);
+  FIELD(octocap_camera_status_t, nominal_fps); FIELD(octocap_camera_status_t, name);
 }
 
 static int fail(const char* what) {

@@ -19,7 +19,8 @@ namespace Octocap.Tests
             { "octocap_subscriber_config_t", typeof(SubscriberConfig) }, { "octocap_stream_info_t", typeof(StreamInfo) },
             { "octocap_detector_config_t", typeof(DetectorConfig) }, { "octocap_image_t", typeof(Image) },
             { "octocap_detect_info_t", typeof(DetectInfo) }, { "octocap_frame_summary_t", typeof(FrameSummary) },
-            { "octocap_person_t", typeof(Person) },
+            { "octocap_person_t", typeof(Person) }, { "octocap_live_config_t", typeof(LiveConfig) },
+            { "octocap_live_stats_t", typeof(LiveStats) }, { "octocap_camera_status_t", typeof(CameraStatus) },
         };
 
         static string Pascal(string snake)

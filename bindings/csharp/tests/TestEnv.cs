@@ -9,6 +9,7 @@ namespace Octocap.Tests
     {
         public static string Sample => Require("OCTOCAP_SAMPLE_DIR");
         public static string AbiDump => Require("OCTOCAP_ABI_DUMP");
+        public static string Root => Require("OCTOCAP_SOURCE_DIR");
 
         static string Require(string name)
         {

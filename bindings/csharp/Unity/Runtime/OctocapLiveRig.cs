@@ -1,0 +1,45 @@
+// Live capture in Unity: cameras (devices, rtsp://, http://, or files) opened and solved on octocap's own threads;
+// the game loop only reads the newest frame (OctocapAvatarDriver via IFrameSource), so capture and detection never
+// cost a frame of the game. Prefer this to OctocapCameraRig, which detects from WebCamTextures on the main thread.
+using System;
+using Octocap;
+using UnityEngine;
+
+public sealed class OctocapLiveRig : MonoBehaviour
+{
+    public string calibrationPath = "calibration.toml";
+    /// <summary>One per calibrated camera, in calibration order: "/dev/video0" or "0", "rtsp://...", "http://...",
+    /// a video file or a picture folder.</summary>
+    public string[] cameras = new string[0];
+    public string model = "movenet-lightning";
+    public DetectMode mode = DetectMode.Crop;
+    /// <summary>Avatars driven by this capture (each by its personIndex).</summary>
+    public OctocapAvatarDriver[] avatars = new OctocapAvatarDriver[0];
+
+    public Live Live { get; private set; }
+    Calibration _calibration;
+
+    void Start()
+    {
+        Library.CheckVersion();
+        _calibration = Calibration.Load(calibrationPath);
+        SessionConfig session = SessionConfig.Default;
+        session.Layout = Layout.Coco17;  // the shipped models' layout
+        Live = new Live(LiveConfig.Default, session, _calibration, cameras);
+        DetectorConfig detector = DetectorConfig.Default;
+        detector.SetModel(model);
+        detector.Mode = mode;
+        Live.SetDetector(detector);
+        Live.Start();  // an OctocapException names a camera that cannot be opened
+        foreach (var avatar in avatars)
+            if (avatar != null) avatar.Source = Live;
+    }
+
+    void OnDestroy()
+    {
+        foreach (var avatar in avatars)
+            if (avatar != null && avatar.Source == Live) avatar.Source = null;
+        Live?.Dispose();
+        _calibration?.Dispose();
+    }
+}
