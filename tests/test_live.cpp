@@ -330,3 +330,28 @@ TEST_CASE("live: a network camera killed mid-run is reconnected while the other 
   live.stop();
   CHECK(live.stats().running == 0);
 }
+
+TEST_CASE("octocap live: real videos as cameras to a TRC, with the per-stage table; bad cameras named", "[live][cli]") {
+  testing::TempDir dir;
+  std::string cameras;
+  for (const std::string& v : demo_videos()) cameras += " --camera " + v;
+  const std::string base = std::string(OCTOCAP_CLI_PATH) + " live --calibration " + kDemo +
+                           "/calibration/Calib_qualisys.toml --model movenet-lightning --quiet";
+  testing::Run r = testing::run_command(base + cameras + " --output " + dir.file("take.trc"));
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  CHECK_THAT(r.output, ContainsSubstring("octocap live: 4 cameras"));
+  CHECK_THAT(r.output, ContainsSubstring("2D detection"));
+  CHECK_THAT(r.output, ContainsSubstring("latency (grab to frame): p50"));
+  CHECK_THAT(r.output, ContainsSubstring("camera cam_04"));
+  CHECK_THAT(r.output, ContainsSubstring("reconnects 0"));
+  // The TRC holds the header and at least one solved frame.
+  const octocap::Motion take(dir.file("take.trc"));
+  CHECK(take.frame_count() >= 1);
+  r = testing::run_command(base + " --camera " + kVideos + "cam01.mp4 --camera /nonexistent/cam2.mp4 --camera x --camera y");
+  CHECK(r.status != 0);
+  CHECK_THAT(r.output, ContainsSubstring("/nonexistent/cam2.mp4"));
+  r = testing::run_command(base + " --camera " + kVideos + "cam01.mp4");
+  CHECK(r.status != 0);
+  CHECK_THAT(r.output, ContainsSubstring("the calibration has 4"));
+}
