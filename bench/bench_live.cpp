@@ -1,0 +1,100 @@
+// Live capture benchmark (not a test): the engine end to end on real footage delivered as cameras deliver it.
+//   files:   Pose2Sim's 4 real videos (1088x1920, 60 fps) played as cameras at their own rate;
+//   network: the same views as MJPEG over HTTP on loopback (ffmpeg servers, 272x480, 60 fps), 2 and 4 cameras.
+// Per row: solved frame sets per second, sets without every camera, per-stage means (image collection = waiting for
+// the set, 2D detection, 3D + rig), grab-to-frame latency p50 / p99, pictures dropped (bounded mailboxes at work).
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "child_process.h"
+#include "octocap/octocap.hpp"
+
+namespace {
+
+const std::string kRoot = OCTOCAP_SOURCE_DIR;
+const std::string kVideos = kRoot + "/.cache/pose2sim-0.10.49/Demo_SinglePerson/videos/";
+const std::string kLab = kRoot + "/.cache/pose2sim-0.4.15/Demo/calibration/Calib_qualisys.toml";
+
+void row(const char* what, const octocap::Calibration& calib, const std::vector<std::string>& cameras,
+         const char* model, double seconds) {
+  octocap_live_config_t cfg;
+  octocap_live_config_init(&cfg);
+  octocap_session_config_t s;
+  octocap_session_config_init(&s);
+  s.layout = OCTOCAP_LAYOUT_COCO_17;
+  octocap::Live live(cfg, s, calib, cameras);
+  octocap_detector_config_t d;
+  octocap_detector_config_init(&d);
+  std::snprintf(d.model, sizeof d.model, "%s", model);
+  live.set_detector(d);
+  live.start();
+  const auto start = std::chrono::steady_clock::now();
+  while (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < seconds) {
+    if (!live.take(500) && live.stats().finished) break;
+  }
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  live.stop();
+  const octocap_live_stats_t st = live.stats();
+  uint64_t grabbed = 0, dropped = 0;
+  for (uint32_t c = 0; c < st.camera_count; ++c) {
+    grabbed += live.camera(c).grabbed;
+    dropped += live.camera(c).dropped;
+  }
+  std::printf("| %-34s | %-17s | %5.1f | %4.0f %% | %6.1f | %6.1f | %5.2f | %5.0f / %5.0f | %3.0f %% |\n", what, model,
+              static_cast<double>(st.frame_sets) / elapsed,
+              st.frame_sets ? 100.0 * static_cast<double>(st.sets_incomplete) / static_cast<double>(st.frame_sets) : 0.0,
+              st.capture_ms, st.detect_ms, st.solve_ms, st.latency_p50_ms, st.latency_p99_ms,
+              grabbed ? 100.0 * static_cast<double>(dropped) / static_cast<double>(grabbed) : 0.0);
+}
+
+}  // namespace
+
+int main() {
+  const octocap::Calibration lab = octocap::Calibration::load(kLab);
+  std::printf("# octocap live engine (this machine, default threads; the detector decides the rate)\n\n");
+  std::printf("| cameras | model | sets/s | incomplete | collect ms | detect ms | 3D+rig ms | latency p50 / p99 ms | dropped |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  std::vector<std::string> files;
+  for (int c = 1; c <= 4; ++c) files.push_back(kVideos + "cam0" + std::to_string(c) + ".mp4");
+  for (const char* model : {"movenet-lightning", "movenet-thunder"})
+    row("4 video files, 1088x1920 @ 60", lab, files, model, 10);
+
+  // The same views as IP cameras: small MJPEG files served in a loop by ffmpeg.
+  const std::string tmp = "/tmp/octocap-bench-live-" + std::to_string(getpid());
+  std::vector<std::unique_ptr<testing::ChildProcess>> servers;
+  std::vector<std::string> urls;
+  for (int c = 0; c < 4; ++c) {
+    const std::string avi = tmp + "-cam" + std::to_string(c) + ".avi";
+    const std::string cmd = "ffmpeg -loglevel error -y -i " + files[c] + " -vf scale=272:480 -c:v mjpeg -q:v 4 -an " + avi;
+    if (std::system(cmd.c_str()) != 0) {
+      std::printf("\n(ffmpeg not found: network rows skipped)\n");
+      return 0;
+    }
+    urls.push_back("http://127.0.0.1:" + std::to_string(30500 + c) + "/cam.mjpg");
+    servers.push_back(std::make_unique<testing::ChildProcess>(std::vector<std::string>{
+        "/usr/bin/ffmpeg", "-loglevel", "quiet", "-re", "-stream_loop", "-1", "-i", avi, "-c:v", "copy", "-f",
+        "mpjpeg", "-listen", "1", urls.back()}));
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  const octocap_camera_t two_cams[2] = {lab.camera(0), lab.camera(1)};
+  octocap_calibration_t* raw = nullptr;
+  octocap::check(octocap_calibration_create(two_cams, 2, &raw), "two cameras");
+  const octocap::Calibration two(raw);
+  row("2 MJPEG/HTTP cameras, 272x480 @ 60", two, {urls[0], urls[1]}, "movenet-lightning", 10);
+  servers.clear();  // each ffmpeg serves one client: start them again for the 4-camera row
+  for (int c = 0; c < 4; ++c)
+    servers.push_back(std::make_unique<testing::ChildProcess>(std::vector<std::string>{
+        "/usr/bin/ffmpeg", "-loglevel", "quiet", "-re", "-stream_loop", "-1", "-i",
+        tmp + "-cam" + std::to_string(c) + ".avi", "-c:v", "copy", "-f", "mpjpeg", "-listen", "1", urls[c]}));
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  row("4 MJPEG/HTTP cameras, 272x480 @ 60", lab, urls, "movenet-lightning", 10);
+  servers.clear();
+  for (int c = 0; c < 4; ++c) std::remove((tmp + "-cam" + std::to_string(c) + ".avi").c_str());
+  return 0;
+}
