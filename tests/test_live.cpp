@@ -247,10 +247,14 @@ TEST_CASE("live: misuse and unopenable cameras are clear errors", "[live][misuse
   CHECK(f == nullptr);
   CHECK(octocap_live_get_frame(l, &f) == OCTOCAP_ERROR_NO_RESULT);
   CHECK(octocap_live_stop(l) == OCTOCAP_OK);  // stopping what never ran is fine
+  const int32_t offsets[4] = {0, 15000, 0, -2000};
+  CHECK(octocap_live_set_latency_offsets(l, offsets, 3) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  CHECK(octocap_live_set_latency_offsets(l, offsets, 4) == OCTOCAP_OK);
   REQUIRE(octocap_live_set_detector(l, &det) == OCTOCAP_OK);
   REQUIRE(octocap_live_start(l) == OCTOCAP_OK);
   CHECK(octocap_live_start(l) == OCTOCAP_ERROR_INVALID_ARGUMENT);
   CHECK(octocap_live_set_detector(l, &det) == OCTOCAP_ERROR_INVALID_ARGUMENT);  // not while running
+  CHECK(octocap_live_set_latency_offsets(l, offsets, 4) == OCTOCAP_ERROR_INVALID_ARGUMENT);
   octocap_camera_status_t cam{};
   cam.struct_size = sizeof cam;
   CHECK(octocap_live_get_camera_status(l, 4, &cam) == OCTOCAP_ERROR_INVALID_ARGUMENT);

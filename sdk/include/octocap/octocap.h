@@ -787,6 +787,11 @@ OCTOCAP_API octocap_result_t octocap_live_create(const octocap_live_config_t* cf
 /** Sets the detector (loaded now) before start; without it the default detector is loaded at start. Errors as
  *  octocap_session_set_detector(), and INVALID_ARGUMENT while running. */
 OCTOCAP_API octocap_result_t octocap_live_set_detector(octocap_live_t* live, const octocap_detector_config_t* cfg);
+/** Per camera (camera_count values, calibration order), how many microseconds late it delivers its pictures
+ *  (a network camera's encoder and transport, measured or from octocap sync): subtracted from its grab times before
+ *  frame sets are matched. Before start. Errors: INVALID_ARGUMENT (wrong count, beyond +-10 s, while running). */
+OCTOCAP_API octocap_result_t octocap_live_set_latency_offsets(octocap_live_t* live, const int32_t* offsets_us,
+                                                              uint32_t camera_count);
 /** Loads the detector if needed, opens every camera (IO naming the first that cannot be opened; none stays open) and
  *  starts the threads. INVALID_ARGUMENT when already running. */
 OCTOCAP_API octocap_result_t octocap_live_start(octocap_live_t* live);

@@ -78,6 +78,14 @@ octocap_result_t octocap_live_set_detector(octocap_live_t* l, const octocap_dete
   });
 }
 
+octocap_result_t octocap_live_set_latency_offsets(octocap_live_t* l, const int32_t* offsets_us, uint32_t camera_count) {
+  return capi::guard([&] {
+    LiveEngine& e = engine_of(l);
+    if (camera_count > 0) capi::require(offsets_us, "offsets_us");
+    e.set_latency_offsets(std::vector<int64_t>(offsets_us, offsets_us + camera_count));
+  });
+}
+
 octocap_result_t octocap_live_start(octocap_live_t* l) {
   return capi::guard([&] { engine_of(l).start(); });
 }

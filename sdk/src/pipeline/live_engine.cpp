@@ -53,6 +53,16 @@ void LiveEngine::set_detector(const DetectorConfig& config) {
   session_->set_detector(config);
 }
 
+void LiveEngine::set_latency_offsets(const std::vector<int64_t>& offsets_us) {
+  if (running_) throw Error(Errc::invalid_argument, "the live engine is running: set latency offsets before start");
+  if (offsets_us.size() != feeds_.size())
+    throw Error(Errc::invalid_argument, "latency offsets: " + std::to_string(offsets_us.size()) + " given, " +
+                                            std::to_string(feeds_.size()) + " cameras");
+  for (int64_t o : offsets_us)
+    if (o < -10000000 || o > 10000000) throw Error(Errc::invalid_argument, "a latency offset beyond 10 s");
+  config_.latency_offsets_us = offsets_us;
+}
+
 void LiveEngine::start() {
   if (running_) throw Error(Errc::invalid_argument, "the live engine is already running");
   if (!session_->detector()) session_->set_detector(config_.session.detector);  // fail before opening cameras
@@ -142,13 +152,7 @@ void LiveEngine::run() {
       continue;
     }
     const FrameSetDecision d = decide_frame_set(candidates, monotonic_us(), sync_);
-    if (!d.emit) {
-      if (all_done) {
-        // Nothing more will come: what is left goes out as it is.
-      } else {
-        continue;
-      }
-    }
+    if (!d.emit && !all_done) continue;  // a camera that delivers is about to: wait for it
     bool complete = true;
     for (size_t c = 0; c < n; ++c) {
       present[c] = d.take[c] != 0 && feeds_[c]->take(d.take[c], frames[c]);
@@ -156,7 +160,7 @@ void LiveEngine::run() {
       complete = complete && present[c];
     }
     if (std::none_of(present.begin(), present.end(), [](bool p) { return p; })) {
-      // Ended cameras whose last pictures match no set: they are done.
+      // Every camera ended and their last pictures make no set: nothing is left to solve.
       for (size_t c = 0; c < n; ++c) last_used[c] = std::max(last_used[c], candidates[c].newest.sequence);
       continue;
     }

@@ -57,6 +57,8 @@ class LiveEngine {
   LiveEngine& operator=(const LiveEngine&) = delete;
 
   void set_detector(const DetectorConfig& config);  // before start()
+  // Per camera, how late it delivers (µs, subtracted from its grab times before matching); before start().
+  void set_latency_offsets(const std::vector<int64_t>& offsets_us);
   // Opens every camera (Error(io) naming one that cannot be opened; the others are closed again), then runs.
   void start();
   void stop();  // idempotent
