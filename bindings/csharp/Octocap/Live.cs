@@ -37,6 +37,13 @@ namespace Octocap
         public void SetDetector(DetectorConfig config) =>
             OctocapException.Check(NativeMethods.octocap_live_set_detector(_handle, ref config));
 
+        /// <summary>Per camera (calibration order), how many microseconds late it delivers; before Start.</summary>
+        public void SetLatencyOffsets(int[] offsetsUs)
+        {
+            if (offsetsUs == null) throw new ArgumentNullException(nameof(offsetsUs));
+            OctocapException.Check(NativeMethods.octocap_live_set_latency_offsets(_handle, offsetsUs, (uint)offsetsUs.Length));
+        }
+
         /// <summary>Opens every camera (an OctocapException naming one that cannot be opened) and starts.</summary>
         public void Start() => OctocapException.Check(NativeMethods.octocap_live_start(_handle));
         public void Stop() => OctocapException.Check(NativeMethods.octocap_live_stop(_handle));

@@ -447,6 +447,7 @@ namespace Octocap
         [DllImport(Lib)] internal static extern Result octocap_live_config_defaults(ref LiveConfig cfg, uint structSize);
         [DllImport(Lib)] internal static extern Result octocap_live_create(ref LiveConfig cfg, ref SessionConfig sessionCfg, CalibrationHandle calib, IntPtr[] cameras, uint count, out LiveHandle live);
         [DllImport(Lib)] internal static extern Result octocap_live_set_detector(LiveHandle live, ref DetectorConfig cfg);
+        [DllImport(Lib)] internal static extern Result octocap_live_set_latency_offsets(LiveHandle live, int[] offsetsUs, uint count);
         [DllImport(Lib)] internal static extern Result octocap_live_start(LiveHandle live);
         [DllImport(Lib)] internal static extern Result octocap_live_stop(LiveHandle live);
         [DllImport(Lib)] internal static extern void octocap_live_destroy(IntPtr live);

@@ -24,6 +24,9 @@ namespace Octocap.Tests
                     DetectorConfig det = DetectorConfig.Default;
                     det.SetModel("movenet-lightning");
                     live.SetDetector(det);
+                    Assert.AreEqual(Result.InvalidArgument,
+                                    Assert.Throws<OctocapException>(() => live.SetLatencyOffsets(new[] { 0, 1 })).Result);
+                    live.SetLatencyOffsets(new[] { 0, 0, 0, 0 });
                     Assert.IsNull(live.TryGetFrame(), "nothing before the start, and no waiting");
                     live.Start();
                     int withPerson = 0;
