@@ -42,6 +42,13 @@ octocap_session_config_t coco_session() {
   return cfg;
 }
 
+octocap_detector_config_t lightning() {
+  octocap_detector_config_t det;
+  octocap_detector_config_init(&det);
+  std::snprintf(det.model, sizeof det.model, "%s", "movenet-lightning");  // the faster model: more sets per second
+  return det;
+}
+
 double median(std::vector<double> v) {
   if (v.empty()) return 1e9;
   std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
@@ -130,10 +137,7 @@ TEST_CASE("live: four real views played as picture-folder cameras solve as the o
   octocap_live_config_init(&cfg);
   cfg.picture_rate_hz = 10;
   octocap::Live live(cfg, coco_session(), calib, folders);
-  octocap_detector_config_t det;
-  octocap_detector_config_init(&det);
-  std::snprintf(det.model, sizeof det.model, "%s", "movenet-lightning");
-  live.set_detector(det);
+  live.set_detector(lightning());
   live.start();
   std::vector<double> reprojection;
   size_t frames = 0, with_person = 0, solved = 0;
@@ -179,10 +183,7 @@ TEST_CASE("live: real videos as cameras are played at their own rate and solved"
   octocap_live_config_t cfg;
   octocap_live_config_init(&cfg);
   octocap::Live live(cfg, coco_session(), calib, demo_videos());
-  octocap_detector_config_t det;
-  octocap_detector_config_init(&det);
-  std::snprintf(det.model, sizeof det.model, "%s", "movenet-lightning");
-  live.set_detector(det);
+  live.set_detector(lightning());
   live.start();
   size_t with_person = 0;
   while (std::optional<octocap::Frame> f = live.take(10000)) with_person += f->person_count() > 0;
@@ -227,9 +228,7 @@ TEST_CASE("live: misuse and unopenable cameras are clear errors", "[live][misuse
   cfg.open_timeout_ms = 1000;
   specs[3] = "http://127.0.0.1:9/none.mjpg";
   REQUIRE(octocap_live_create(&cfg, &scfg, calib.get(), specs.data(), 4, &l) == OCTOCAP_OK);
-  octocap_detector_config_t det;
-  octocap_detector_config_init(&det);
-  std::snprintf(det.model, sizeof det.model, "%s", "movenet-lightning");
+  const octocap_detector_config_t det = lightning();
   REQUIRE(octocap_live_set_detector(l, &det) == OCTOCAP_OK);
   CHECK(octocap_live_start(l) == OCTOCAP_ERROR_IO);
   CHECK_THAT(octocap_last_error(), ContainsSubstring("http://127.0.0.1:9/none.mjpg"));
@@ -308,10 +307,7 @@ TEST_CASE("live: a network camera killed mid-run is reconnected while the other 
   std::vector<std::string> urls;
   for (int c = 0; c < 2; ++c) urls.push_back("http://127.0.0.1:" + std::to_string(base_port + c) + "/cam.mjpg");
   octocap::Live live(cfg, coco_session(), calib, urls);
-  octocap_detector_config_t det;
-  octocap_detector_config_init(&det);
-  std::snprintf(det.model, sizeof det.model, "%s", "movenet-lightning");
-  live.set_detector(det);
+  live.set_detector(lightning());
   live.start();
   auto solved = [&] { return live.stats().frames_with_person; };
   REQUIRE(wait_until([&] { return solved() >= 5; }, 20000));

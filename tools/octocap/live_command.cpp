@@ -39,15 +39,7 @@ int live(const LiveOptions& o) {
                 : o.method == "subdivision"  ? OCTOCAP_METHOD_SUBDIVISION
                                              : OCTOCAP_METHOD_AUTO;
   scfg.filter = o.filter == "none" ? OCTOCAP_FILTER_NONE : OCTOCAP_FILTER_ONE_EURO;
-  scfg.vmc_port = o.vmc_port;
-  std::snprintf(scfg.vmc_host, sizeof scfg.vmc_host, "%s", o.vmc_host.c_str());
-  if (o.publish) {
-    scfg.stream_enable = 1;
-    scfg.stream_domain_id = o.domain;
-    scfg.stream_qos = o.publish_qos == "record" ? OCTOCAP_QOS_RECORD : OCTOCAP_QOS_LIVE;
-    scfg.stream_source_id = o.source_id;
-    std::snprintf(scfg.stream_topic, sizeof scfg.stream_topic, "%s", o.topic.c_str());
-  }
+  apply_outputs(o.out, scfg);
   octocap::Live capture(cfg, scfg, calib, o.cameras);
   capture.set_detector(o.detector.config());
   octocap_up_axis_t up = OCTOCAP_UP_Y;

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "detect_command.h"
+#include "output_options.h"
 
 struct LiveOptions {
   std::vector<std::string> cameras;  // in calibration order
@@ -13,13 +14,7 @@ struct LiveOptions {
   std::string method = "auto";
   std::string filter = "oneeuro";
   bool quiet = false;
-  bool publish = false;
-  std::string publish_qos = "live";
-  unsigned domain = 0;
-  std::string topic = "octocap";
-  unsigned source_id = 1;
-  unsigned vmc_port = 0;
-  std::string vmc_host = "127.0.0.1";
+  OutputOptions out;
 };
 
 int run_live(const LiveOptions& options);

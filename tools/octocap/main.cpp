@@ -19,6 +19,18 @@ void add_detector_options(CLI::App* app, DetectorOptions& d) {
   app->add_option("--parallel-views", d.parallel_views, "Views inferred at once (0: one per core)")->check(CLI::Range(0, 256))->capture_default_str();
 }
 
+void add_output_options(CLI::App* app, OutputOptions& o) {
+  app->add_flag("--publish", o.publish, "Stream every frame over DDS (solve: paced at --rate)");
+  app->add_option("--publish-qos", o.publish_qos, "live (best effort, newest only) or record (reliable, late joiners get history)")
+      ->check(CLI::IsMember({"live", "record"}))->capture_default_str();
+  app->add_option("--domain", o.domain, "DDS domain id")->check(CLI::Range(0, 232))->capture_default_str();
+  app->add_option("--topic", o.topic, "DDS topic base name")->capture_default_str();
+  app->add_option("--source-id", o.source_id, "This rig's id on the topic")->capture_default_str();
+  app->add_option("--vmc-port", o.vmc_port, "Also send VMC protocol (OSC/UDP) to this port (VMC's usual: 39539)")
+      ->check(CLI::Range(0, 65535));
+  app->add_option("--vmc-host", o.vmc_host, "VMC receiver host")->capture_default_str();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -48,17 +60,9 @@ int main(int argc, char** argv) {
   sc->add_option("--threads", solve.threads, "Worker threads (0: all cores)")->capture_default_str();
   sc->add_option("--ground-truth", solve.ground_truth, "CSV of true 3D keypoints: report the error against it")->check(CLI::ExistingFile);
   sc->add_flag("--quiet", solve.quiet, "No progress on stderr");
-  sc->add_flag("--publish", solve.publish, "Stream every frame over DDS, paced at --rate");
-  sc->add_option("--publish-qos", solve.publish_qos, "live (best effort, newest only) or record (reliable, late joiners get history)")
-      ->check(CLI::IsMember({"live", "record"}))->capture_default_str();
-  sc->add_option("--domain", solve.domain, "DDS domain id")->check(CLI::Range(0, 232))->capture_default_str();
-  sc->add_option("--topic", solve.topic, "DDS topic base name")->capture_default_str();
-  sc->add_option("--source-id", solve.source_id, "This rig's id on the topic")->capture_default_str();
+  add_output_options(sc, solve.out);
   sc->add_option("--start-frame", solve.start_frame, "Skip the recording's first frames (numbering keeps their index)")->capture_default_str();
   sc->add_option("--wait-subscribers", solve.wait_subscribers, "With --publish: wait (up to 10 s) for this many subscribers before the first frame")->capture_default_str();
-  sc->add_option("--vmc-port", solve.vmc_port, "Also send VMC protocol (OSC/UDP) to this port (VMC's usual: 39539); paced at --rate")
-      ->check(CLI::Range(0, 65535));
-  sc->add_option("--vmc-host", solve.vmc_host, "VMC receiver host")->capture_default_str();
   sc->add_option("--linger-s", solve.linger_s, "With --publish: stay on the network this long after the last frame")->capture_default_str();
 
   DetectOptions detect;
@@ -81,13 +85,7 @@ int main(int argc, char** argv) {
   lv->add_option("--bvh", live.bvh, "Also write the bone animation as BVH");
   lv->add_option("--method", live.method, "3D method")->check(CLI::IsMember({"auto", "subdivision", "triangulation"}))->capture_default_str();
   lv->add_option("--filter", live.filter, "Temporal filter")->check(CLI::IsMember({"none", "oneeuro"}))->capture_default_str();
-  lv->add_flag("--publish", live.publish, "Stream every frame over DDS");
-  lv->add_option("--publish-qos", live.publish_qos, "live or record")->check(CLI::IsMember({"live", "record"}))->capture_default_str();
-  lv->add_option("--domain", live.domain, "DDS domain id")->check(CLI::Range(0, 232))->capture_default_str();
-  lv->add_option("--topic", live.topic, "DDS topic base name")->capture_default_str();
-  lv->add_option("--source-id", live.source_id, "This rig's id on the topic")->capture_default_str();
-  lv->add_option("--vmc-port", live.vmc_port, "Also send VMC protocol (OSC/UDP) to this port (VMC's usual: 39539)")->check(CLI::Range(0, 65535));
-  lv->add_option("--vmc-host", live.vmc_host, "VMC receiver host")->capture_default_str();
+  add_output_options(lv, live.out);
   lv->add_flag("--quiet", live.quiet, "No status line on stderr");
   add_detector_options(lv, live.detector);
 

@@ -107,15 +107,7 @@ int solve(const SolveOptions& o) {
   cfg.delta_m = static_cast<float>(o.delta_mm / 1000.0);
   cfg.worker_threads = o.threads;
   cfg.first_frame_index = o.start_frame;
-  cfg.vmc_port = o.vmc_port;
-  std::snprintf(cfg.vmc_host, sizeof cfg.vmc_host, "%s", o.vmc_host.c_str());
-  if (o.publish) {
-    cfg.stream_enable = 1;
-    cfg.stream_domain_id = o.domain;
-    cfg.stream_qos = o.publish_qos == "record" ? OCTOCAP_QOS_RECORD : OCTOCAP_QOS_LIVE;
-    cfg.stream_source_id = o.source_id;
-    std::snprintf(cfg.stream_topic, sizeof cfg.stream_topic, "%s", o.topic.c_str());
-  }
+  apply_outputs(o.out, cfg);
   if (!o.debug_images.empty()) std::filesystem::create_directories(o.debug_images);
   octocap::Session session(cfg, calib);
   if (source) session.set_detector(o.detector.config());
@@ -148,7 +140,7 @@ int solve(const SolveOptions& o) {
   Accuracy acc;
   acc.per_keypoint_sum.assign(K, 0);
   acc.per_keypoint_n.assign(K, 0);
-  if (o.publish && o.wait_subscribers > 0) {
+  if (o.out.publish && o.wait_subscribers > 0) {
     const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
     uint32_t readers = 0;
     while ((readers = session.stream_subscribers()) < o.wait_subscribers && std::chrono::steady_clock::now() < give_up)
@@ -159,7 +151,7 @@ int solve(const SolveOptions& o) {
   }
   const auto start = std::chrono::steady_clock::now();
   for (uint32_t f = o.start_frame; f < frames; ++f) {
-    if (o.publish || o.vmc_port) {
+    if (o.out.publish || o.out.vmc_port) {
       // Stream at the recording's own rate, as a live rig would.
       const auto due = start + std::chrono::microseconds(static_cast<int64_t>((f - o.start_frame) * 1e6 / o.rate_hz));
       std::this_thread::sleep_until(due);
@@ -212,7 +204,7 @@ int solve(const SolveOptions& o) {
       std::fprintf(stderr, "\r  frame %u / %u", f + 1, frames);
   }
   if (!o.quiet && frames >= 50) std::fprintf(stderr, "\n");
-  if (o.publish) {
+  if (o.out.publish) {
     session.flush_stream();
     std::this_thread::sleep_for(std::chrono::milliseconds(static_cast<int64_t>(o.linger_s * 1000)));
   }
@@ -238,7 +230,7 @@ int solve(const SolveOptions& o) {
   std::printf("  3D solve time:        %.3f ms/frame; end to end (JSON parsing included) %.2f ms/frame, %.0f frames/s%s\n",
               done ? solve_ms / done : 0.0, done ? total_ms / done : 0.0,
               total_ms > 0 ? done * 1000.0 / total_ms : 0.0,
-              o.publish || o.vmc_port ? " (paced at --rate for streaming)" : "");
+              o.out.publish || o.out.vmc_port ? " (paced at --rate for streaming)" : "");
   if (source)
     std::printf("  2D detection:         %.1f ms/frame, model %s, mode %s (ONNX Runtime %s)\n",
                 done ? detect_ms / done : 0.0, detect_model.c_str(), o.detector.mode.c_str(),

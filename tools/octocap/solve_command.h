@@ -2,6 +2,7 @@
 #include <string>
 
 #include "detect_command.h"
+#include "output_options.h"
 
 struct SolveOptions {
   std::string calibration, keypoints, output, csv, bvh, ground_truth;
@@ -17,17 +18,10 @@ struct SolveOptions {
   double rate_hz = 30.0;
   unsigned threads = 0;
   bool quiet = false;
-  // Streaming (DDS): publish every frame, paced at --rate.
-  bool publish = false;
-  std::string publish_qos = "live";
-  unsigned domain = 0;
-  std::string topic = "octocap";
-  unsigned source_id = 1;
+  OutputOptions out;  // DDS and VMC, paced at --rate
   unsigned start_frame = 0;
   double linger_s = 0.5;
   unsigned wait_subscribers = 0;
-  unsigned vmc_port = 0;
-  std::string vmc_host = "127.0.0.1";
 };
 
 int run_solve(const SolveOptions& options);
