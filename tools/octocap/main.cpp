@@ -5,6 +5,7 @@
 #include "octocap/octocap.h"
 #include "detect_command.h"
 #include "live_command.h"
+#include "sync_command.h"
 #include "solve_command.h"
 
 namespace {
@@ -58,6 +59,7 @@ int main(int argc, char** argv) {
   sc->add_option("--up", solve.up, "World up axis of the calibration")->check(CLI::IsMember({"auto", "y", "z"}))->capture_default_str();
   sc->add_option("--rate", solve.rate_hz, "Frame rate of the recording, Hz")->check(CLI::PositiveNumber)->capture_default_str();
   sc->add_option("--threads", solve.threads, "Worker threads (0: all cores)")->capture_default_str();
+  sc->add_option("--sync", solve.sync, "Sync TOML (octocap sync): each camera's keypoints taken at its own time offset")->check(CLI::ExistingFile);
   sc->add_option("--ground-truth", solve.ground_truth, "CSV of true 3D keypoints: report the error against it")->check(CLI::ExistingFile);
   sc->add_flag("--quiet", solve.quiet, "No progress on stderr");
   add_output_options(sc, solve.out);
@@ -89,6 +91,14 @@ int main(int argc, char** argv) {
   lv->add_flag("--quiet", live.quiet, "No status line on stderr");
   add_detector_options(lv, live.detector);
 
+  SyncOptions sync;
+  CLI::App* sy = app.add_subcommand("sync", "Estimate each camera's time offset from the person's motion (unsynchronised cameras)");
+  sy->add_option("--calibration", sync.calibration, "Calibration TOML (anipose / Pose2Sim)")->required()->check(CLI::ExistingFile);
+  sy->add_option("--keypoints", sync.keypoints, "Folder with one OpenPose JSON sub-folder per camera")->required()->check(CLI::ExistingDirectory);
+  sy->add_option("--rate", sync.rate_hz, "Frame rate of the recording, Hz")->check(CLI::PositiveNumber)->capture_default_str();
+  sy->add_option("--max-offset-s", sync.max_offset_s, "Offsets searched on either side, seconds")->check(CLI::PositiveNumber)->capture_default_str();
+  sy->add_option("--output", sync.output, "Sync TOML to write (for octocap solve --sync)")->required();
+
   CLI::App* lc = app.add_subcommand("layouts", "List the keypoint layouts and their keypoints");
 
   CLI11_PARSE(app, argc, argv);
@@ -99,6 +109,7 @@ int main(int argc, char** argv) {
   }
   if (dc->parsed()) return run_detect(detect);
   if (lv->parsed()) return run_live(live);
+  if (sy->parsed()) return run_sync(sync);
   if (lc->parsed()) return run_layouts();
   return 0;
 }

@@ -75,12 +75,18 @@ int solve(const SolveOptions& o) {
   std::unique_ptr<ImageSource> source;
   uint32_t views = 0, frames = 0;
   if (!o.images.empty()) {
+    if (!o.sync.empty()) throw std::runtime_error("--sync applies to --keypoints (run octocap detect first)");
     source = std::make_unique<ImageSource>(o.images);
     views = static_cast<uint32_t>(source->camera_count());
     frames = static_cast<uint32_t>(source->frame_count());
     if (layout == OCTOCAP_LAYOUT_AUTO) layout = OCTOCAP_LAYOUT_COCO_17;  // the shipped models' layout
   } else {
     rec.emplace(o.keypoints, layout);
+    if (!o.sync.empty()) {
+      std::vector<double> offsets(cameras);
+      octocap::check(octocap_sync_load(o.sync.c_str(), calib.get(), offsets.data(), cameras, nullptr), "--sync");
+      octocap::check(octocap_recording_set_sync(rec->get(), offsets.data(), cameras), "--sync");
+    }
     views = rec->view_count();
     frames = rec->frame_count();
     layout = rec->layout();

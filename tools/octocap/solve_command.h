@@ -5,7 +5,7 @@
 #include "output_options.h"
 
 struct SolveOptions {
-  std::string calibration, keypoints, output, csv, bvh, ground_truth;
+  std::string calibration, keypoints, output, csv, bvh, ground_truth, sync;
   std::string images, debug_images;  // --images: detect first (the detector options below)
   unsigned max_frames = 0;
   DetectorOptions detector;

@@ -911,6 +911,32 @@ OCTOCAP_API octocap_result_t octocap_recording_read_frame(octocap_recording_t* r
                                                           uint32_t* keypoint_count, uint32_t* people_per_view,
                                                           uint32_t view_count);
 
+/**
+ * Time offsets of unsynchronised cameras (phones, action cams, IP cameras started apart), from the person's own
+ * motion: each camera is placed against the first where their views agree best (median epipolar distance of the
+ * best-agreeing pair of people per frame, every confident keypoint), refined to a fiftieth of a frame. It needs
+ * motion: a take where the person hardly moves leaves the cost flat (check `residual_px` against the calibration's
+ * own error). `offsets_frames` (count = the views) gets, per camera, where its frame i was captured: (i + offset)
+ * on the first camera's clock (0 for the first); `residual_px` (may be NULL) the distance there. Searches
+ * +-max_offset_frames. The recording's own offsets (octocap_recording_set_sync) are ignored. Errors:
+ * CAMERA_MISMATCH, NOT_ENOUGH_VIEWS (a camera that never shares enough keypoints with the first).
+ */
+OCTOCAP_API octocap_result_t octocap_recording_estimate_sync(const octocap_recording_t* rec,
+                                                             const octocap_calibration_t* calib,
+                                                             double max_offset_frames, double* offsets_frames,
+                                                             float* residual_px, uint32_t count);
+/** From now on octocap_recording_read_frame(rec, f, ...) gives each view at its own frame f - offset, interpolated
+ *  between its two nearest frames (the first camera's clock); NULL clears. Errors: INVALID_ARGUMENT (count, NaN). */
+OCTOCAP_API octocap_result_t octocap_recording_set_sync(octocap_recording_t* rec, const double* offsets_frames,
+                                                        uint32_t count);
+/** Writes offsets as a sync TOML (`rate`, `[offsets_frames]` by the calibration's camera names). */
+OCTOCAP_API octocap_result_t octocap_sync_save(const char* path, double rate_hz, const octocap_calibration_t* calib,
+                                               const double* offsets_frames, uint32_t count);
+/** Reads a sync TOML into `offsets_frames` (count = the calibration's cameras, matched by name) and `rate_hz` (may be
+ *  NULL). Errors: IO, PARSE (malformed, a camera of the calibration missing from it). */
+OCTOCAP_API octocap_result_t octocap_sync_load(const char* path, const octocap_calibration_t* calib,
+                                               double* offsets_frames, uint32_t count, double* rate_hz);
+
 /** @} */
 /* ------------------------------------------------------------------------------------------------------ */
 /** @name Calibrating (stage 1): intrinsics from a board, extrinsics from a person */

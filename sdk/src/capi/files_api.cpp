@@ -1,9 +1,12 @@
 // Recordings (OpenPose JSON folders) and motion writers (TRC / CSV).
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "capi/boundary.h"
 #include "capi/handles.h"
+#include "io/sync_toml.h"
+#include "solve/time_sync.h"
 
 using namespace octocap;
 
@@ -150,5 +153,79 @@ octocap_result_t octocap_motion_writer_close(octocap_motion_writer_t* w) {
 }
 
 void octocap_motion_writer_discard(octocap_motion_writer_t* w) { capi::destroy_handle(w); }
+
+}  // extern "C"
+
+// Sync of unsynchronised cameras: estimate, apply to a recording, and the TOML on disk.
+extern "C" {
+
+octocap_result_t octocap_recording_estimate_sync(const octocap_recording_t* rec, const octocap_calibration_t* calib,
+                                                 double max_offset_frames, double* offsets_frames, float* residual_px,
+                                                 uint32_t count) {
+  return capi::guard([&] {
+    capi::checked(rec, "recording");
+    capi::checked(calib, "calibration");
+    capi::require(offsets_frames, "offsets_frames");
+    capi::require_finite(max_offset_frames, "max_offset_frames");
+    if (!(max_offset_frames >= 0 && max_offset_frames <= 100000))
+      throw Error(Errc::invalid_argument, "max_offset_frames must be 0 .. 100000");
+    if (count != calib->cameras.size())
+      throw Error(Errc::camera_mismatch, "count is " + std::to_string(count) + ", the calibration has " +
+                                             std::to_string(calib->cameras.size()) + " cameras");
+    SyncOptions o;
+    o.max_offset_frames = max_offset_frames;
+    const SyncEstimate e = estimate_recording_offsets(calib->cameras, *rec->recording, o);
+    for (uint32_t c = 0; c < count; ++c) {
+      offsets_frames[c] = e.offset_frames[c];
+      if (residual_px) residual_px[c] = static_cast<float>(e.residual_px[c]);
+    }
+  });
+}
+
+octocap_result_t octocap_recording_set_sync(octocap_recording_t* rec, const double* offsets_frames, uint32_t count) {
+  return capi::guard([&] {
+    capi::checked(rec, "recording");
+    if (!offsets_frames) return rec->recording->set_time_offsets({});
+    rec->recording->set_time_offsets(std::vector<double>(offsets_frames, offsets_frames + count));
+  });
+}
+
+octocap_result_t octocap_sync_save(const char* path, double rate_hz, const octocap_calibration_t* calib,
+                                   const double* offsets_frames, uint32_t count) {
+  return capi::guard([&] {
+    capi::require(path, "path");
+    capi::checked(calib, "calibration");
+    capi::require(offsets_frames, "offsets_frames");
+    if (count != calib->cameras.size()) throw Error(Errc::camera_mismatch, "one offset per calibrated camera");
+    SyncFile s;
+    s.rate_hz = rate_hz;
+    for (uint32_t c = 0; c < count; ++c) {
+      capi::require_finite(offsets_frames[c], "an offset");
+      s.cameras.push_back(calib->cameras[c].name);
+      s.offsets_frames.push_back(offsets_frames[c]);
+    }
+    capi::require_finite(rate_hz, "rate_hz");
+    if (!(rate_hz > 0)) throw Error(Errc::invalid_argument, "rate_hz must be > 0");
+    write_sync_toml(path, s);
+  });
+}
+
+octocap_result_t octocap_sync_load(const char* path, const octocap_calibration_t* calib, double* offsets_frames,
+                                   uint32_t count, double* rate_hz) {
+  return capi::guard([&] {
+    capi::require(path, "path");
+    capi::checked(calib, "calibration");
+    capi::require(offsets_frames, "offsets_frames");
+    if (count != calib->cameras.size()) throw Error(Errc::camera_mismatch, "one offset per calibrated camera");
+    const SyncFile s = read_sync_toml(path);
+    for (uint32_t c = 0; c < count; ++c) {
+      const auto it = std::find(s.cameras.begin(), s.cameras.end(), calib->cameras[c].name);
+      if (it == s.cameras.end())
+        throw Error(Errc::parse, std::string(path) + ": no offset for camera " + calib->cameras[c].name);
+      offsets_frames[c] = s.offsets_frames[static_cast<size_t>(it - s.cameras.begin())];
+    }
+    if (rate_hz) *rate_hz = s.rate_hz;
+  });
+}
 
 }  // extern "C"

@@ -11,3 +11,11 @@ struct Keypoint2D {
 using Person2D = std::vector<Keypoint2D>;
 
 }  // namespace octocap
+
+namespace octocap {
+
+// A person between two frames of one view (w in [0, 1]): linear where both frames have the keypoint confidently,
+// else the nearer frame's keypoint.
+Person2D interpolate_person(const Person2D& a, const Person2D& b, double w, double min_confidence);
+
+}  // namespace octocap

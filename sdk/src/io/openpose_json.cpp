@@ -120,13 +120,52 @@ OpenPoseRecording::OpenPoseRecording(const std::string& directory, LayoutId layo
   }
 }
 
-std::vector<std::vector<Person2D>> OpenPoseRecording::read_frame(size_t frame) const {
+std::vector<std::vector<Person2D>> OpenPoseRecording::read_raw(size_t frame) const {
   if (frame >= frame_count_)
     throw Error(Errc::invalid_argument, "frame " + std::to_string(frame) + " out of range (recording has " +
                                             std::to_string(frame_count_) + ")");
   const size_t n = octocap::layout(layout_).keypoints.size();
   std::vector<std::vector<Person2D>> out;
   for (const auto& v : views_) out.push_back(read_openpose_file(v[frame], n));
+  return out;
+}
+
+void OpenPoseRecording::set_time_offsets(std::vector<double> offsets) {
+  if (!offsets.empty() && offsets.size() != views_.size())
+    throw Error(Errc::invalid_argument, std::to_string(offsets.size()) + " time offsets for " +
+                                            std::to_string(views_.size()) + " views");
+  for (double o : offsets)
+    if (!std::isfinite(o) || std::abs(o) > 1e6) throw Error(Errc::invalid_argument, "a time offset is not finite");
+  offsets_ = std::move(offsets);
+}
+
+std::vector<std::vector<Person2D>> OpenPoseRecording::read_frame(size_t frame) const {
+  if (offsets_.empty()) return read_raw(frame);
+  if (frame >= frame_count_)
+    throw Error(Errc::invalid_argument, "frame " + std::to_string(frame) + " out of range (recording has " +
+                                            std::to_string(frame_count_) + ")");
+  const size_t n = octocap::layout(layout_).keypoints.size();
+  std::vector<std::vector<Person2D>> out(views_.size());
+  for (size_t v = 0; v < views_.size(); ++v) {
+    // This view's own frame for the first camera's frame `frame`; outside its take it saw nobody.
+    const double own = static_cast<double>(frame) - offsets_[v];
+    if (own < 0 || own > static_cast<double>(frame_count_ - 1)) continue;
+    const size_t f0 = static_cast<size_t>(std::floor(own));
+    const size_t f1 = std::min(f0 + 1, frame_count_ - 1);
+    const double w = own - static_cast<double>(f0);
+    const auto a = read_openpose_file(views_[v][f0], n);
+    if (w < 1e-9 || f1 == f0) {
+      out[v] = a;
+      continue;
+    }
+    const auto b = read_openpose_file(views_[v][f1], n);
+    // People are paired by their order when both frames hold as many; otherwise the nearer frame is taken whole.
+    if (a.size() != b.size()) {
+      out[v] = w < 0.5 ? a : b;
+      continue;
+    }
+    for (size_t p = 0; p < a.size(); ++p) out[v].push_back(interpolate_person(a[p], b[p], w, 0.05));
+  }
   return out;
 }
 

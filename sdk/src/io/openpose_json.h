@@ -20,14 +20,20 @@ class OpenPoseRecording {
   size_t frame_count() const { return frame_count_; }
   LayoutId layout() const { return layout_; }
   const std::string& view_name(size_t v) const { return view_names_[v]; }
-  // people[view] for one frame.
+  // people[view] for one frame (with time offsets set: each view at its own fractional frame, interpolated).
   std::vector<std::vector<Person2D>> read_frame(size_t frame) const;
+  // Camera v's frame i was captured at (i + offsets[v]) on the first camera's clock (octocap sync): reading frame f
+  // then gives each view at its frame f - offsets[v], interpolated between its two nearest frames. Empty: none.
+  void set_time_offsets(std::vector<double> offsets_frames);
+  const std::vector<double>& time_offsets() const { return offsets_; }
 
  private:
   std::vector<std::vector<std::string>> views_;  // file paths per view
   std::vector<std::string> view_names_;
   size_t frame_count_ = 0;
   LayoutId layout_;
+  std::vector<double> offsets_;
+  std::vector<std::vector<Person2D>> read_raw(size_t frame) const;
 };
 
 }  // namespace octocap

@@ -1,0 +1,38 @@
+// octocap sync: each camera's time offset from the person's own motion, written as a sync TOML for `solve --sync`.
+#include "sync_command.h"
+
+#include <cstdio>
+#include <vector>
+
+#include "octocap/octocap.hpp"
+
+namespace {
+
+int sync(const SyncOptions& o) {
+  const octocap::Calibration calib = octocap::Calibration::load(o.calibration);
+  octocap::Recording rec(o.keypoints);
+  const uint32_t n = calib.camera_count();
+  std::vector<double> offsets(n);
+  std::vector<float> residual(n);
+  octocap::check(octocap_recording_estimate_sync(rec.get(), calib.get(), o.max_offset_s * o.rate_hz, offsets.data(),
+                                                 residual.data(), n),
+                 "estimating the offsets");
+  octocap::check(octocap_sync_save(o.output.c_str(), o.rate_hz, calib.get(), offsets.data(), n), o.output);
+  std::printf("octocap sync: %u cameras, %u frames at %.1f Hz\n", n, rec.frame_count(), o.rate_hz);
+  for (uint32_t c = 0; c < n; ++c)
+    std::printf("  %-12s offset %+8.2f frames (%+8.1f ms), median epipolar distance %.1f px\n", calib.camera(c).name,
+                offsets[c], 1000.0 * offsets[c] / o.rate_hz, residual[c]);
+  std::printf("  wrote %s\n", o.output.c_str());
+  return 0;
+}
+
+}  // namespace
+
+int run_sync(const SyncOptions& options) {
+  try {
+    return sync(options);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "octocap sync: error: %s\n", e.what());
+    return 1;
+  }
+}
