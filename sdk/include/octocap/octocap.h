@@ -913,8 +913,9 @@ OCTOCAP_API octocap_result_t octocap_recording_read_frame(octocap_recording_t* r
 
 /**
  * Time offsets of unsynchronised cameras (phones, action cams, IP cameras started apart), from the person's own
- * motion: each camera is placed against the first where their views agree best (median epipolar distance of the
- * best-agreeing pair of people per frame, every confident keypoint), refined to a fiftieth of a frame. It needs
+ * motion: every pair of cameras measures its offset difference where their views agree best (median epipolar
+ * distance of the best-agreeing pair of people per frame, every confident keypoint, sub-frame), and all pairs fix the
+ * offsets together (weighted least squares). It needs
  * motion: a take where the person hardly moves leaves the cost flat (check `residual_px` against the calibration's
  * own error). `offsets_frames` (count = the views) gets, per camera, where its frame i was captured: (i + offset)
  * on the first camera's clock (0 for the first); `residual_px` (may be NULL) the distance there. Searches

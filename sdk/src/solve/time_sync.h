@@ -1,8 +1,9 @@
 // Time offsets of unsynchronised cameras, from the person's own motion: with a calibration, the offset at which the
-// views agree in 3D is the true one. For each camera against the first, the epipolar distance of every confident
-// keypoint pair over the whole take is computed at each whole-frame offset, then refined to a fiftieth of a frame
-// with the second camera's keypoints interpolated in time. All keypoints count, so it works whether or not the
-// person moves vertically (Pose2Sim's speed correlation needs vertical motion).
+// views agree is the true one. Every pair of cameras measures its offset difference (the median epipolar distance of
+// the best-agreeing pair of people per frame, at whole frames, refined by a symmetric V fit); cameras are placed one
+// by one against the placed camera they agree with best, then all consistent pairs fix the offsets together by
+// weighted least squares. All keypoints count, so it works whether or not the person moves vertically (Pose2Sim's
+// speed correlation needs vertical motion).
 #pragma once
 #include <vector>
 
