@@ -1,5 +1,7 @@
 #include "detect_command.h"
 
+#include "command_main.h"
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -122,11 +124,4 @@ std::string debug_image_path(const std::string& dir, const std::string& camera, 
   return (fs::path(dir) / name).string();
 }
 
-int run_detect(const DetectOptions& options) {
-  try {
-    return detect(options);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "octocap detect: error: %s\n", e.what());
-    return 1;
-  }
-}
+int run_detect(const DetectOptions& options) { return run_reporting_errors("detect", options, detect); }

@@ -1,6 +1,8 @@
 // octocap live: cameras in, 3D out while the person moves; a status line each second, the per-stage table at the end.
 #include "live_command.h"
 
+#include "command_main.h"
+
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -109,11 +111,4 @@ int live(const LiveOptions& o) {
 
 }  // namespace
 
-int run_live(const LiveOptions& options) {
-  try {
-    return live(options);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "octocap live: error: %s\n", e.what());
-    return 1;
-  }
-}
+int run_live(const LiveOptions& options) { return run_reporting_errors("live", options, live); }

@@ -1,5 +1,7 @@
 #include "solve_command.h"
 
+#include "command_main.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -265,14 +267,7 @@ int solve(const SolveOptions& o) {
 
 }  // namespace
 
-int run_solve(const SolveOptions& options) {
-  try {
-    return solve(options);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "octocap solve: error: %s\n", e.what());
-    return 1;
-  }
-}
+int run_solve(const SolveOptions& options) { return run_reporting_errors("solve", options, solve); }
 
 int run_layouts() {
   for (octocap_layout_t l : {OCTOCAP_LAYOUT_BODY_25, OCTOCAP_LAYOUT_BODY_25B, OCTOCAP_LAYOUT_COCO_17,

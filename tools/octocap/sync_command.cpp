@@ -1,6 +1,8 @@
 // octocap sync: each camera's time offset from the person's own motion, written as a sync TOML for `solve --sync`.
 #include "sync_command.h"
 
+#include "command_main.h"
+
 #include <cstdio>
 #include <vector>
 
@@ -28,11 +30,4 @@ int sync(const SyncOptions& o) {
 
 }  // namespace
 
-int run_sync(const SyncOptions& options) {
-  try {
-    return sync(options);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "octocap sync: error: %s\n", e.what());
-    return 1;
-  }
-}
+int run_sync(const SyncOptions& options) { return run_reporting_errors("sync", options, sync); }
