@@ -67,34 +67,35 @@ int main() {
 
   // The same views as IP cameras: small MJPEG files served in a loop by ffmpeg.
   const std::string tmp = "/tmp/octocap-bench-live-" + std::to_string(getpid());
-  std::vector<std::unique_ptr<testing::ChildProcess>> servers;
-  std::vector<std::string> urls;
+  std::vector<std::string> avis, urls;
   for (int c = 0; c < 4; ++c) {
-    const std::string avi = tmp + "-cam" + std::to_string(c) + ".avi";
-    const std::string cmd = "ffmpeg -loglevel error -y -i " + files[c] + " -vf scale=272:480 -c:v mjpeg -q:v 4 -an " + avi;
+    avis.push_back(tmp + "-cam" + std::to_string(c) + ".avi");
+    const std::string cmd = "ffmpeg -loglevel error -y -i " + files[c] + " -vf scale=272:480 -c:v mjpeg -q:v 4 -an " + avis[c];
     if (std::system(cmd.c_str()) != 0) {
       std::printf("\n(ffmpeg not found: network rows skipped)\n");
       return 0;
     }
     urls.push_back("http://127.0.0.1:" + std::to_string(30500 + c) + "/cam.mjpg");
-    servers.push_back(std::make_unique<testing::ChildProcess>(std::vector<std::string>{
-        "/usr/bin/ffmpeg", "-loglevel", "quiet", "-re", "-stream_loop", "-1", "-i", avi, "-c:v", "copy", "-f",
-        "mpjpeg", "-listen", "1", urls.back()}));
   }
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  // Each ffmpeg serves one client: a fresh set of servers per row.
+  std::vector<std::unique_ptr<testing::ChildProcess>> servers;
+  auto serve_all = [&] {
+    servers.clear();
+    for (int c = 0; c < 4; ++c)
+      servers.push_back(std::make_unique<testing::ChildProcess>(std::vector<std::string>{
+          "/usr/bin/ffmpeg", "-loglevel", "quiet", "-re", "-stream_loop", "-1", "-i", avis[c], "-c:v", "copy", "-f",
+          "mpjpeg", "-listen", "1", urls[c]}));
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  };
+  serve_all();
   const octocap_camera_t two_cams[2] = {lab.camera(0), lab.camera(1)};
   octocap_calibration_t* raw = nullptr;
   octocap::check(octocap_calibration_create(two_cams, 2, &raw), "two cameras");
   const octocap::Calibration two(raw);
   row("2 MJPEG/HTTP cameras, 272x480 @ 60", two, {urls[0], urls[1]}, "movenet-lightning", 10);
-  servers.clear();  // each ffmpeg serves one client: start them again for the 4-camera row
-  for (int c = 0; c < 4; ++c)
-    servers.push_back(std::make_unique<testing::ChildProcess>(std::vector<std::string>{
-        "/usr/bin/ffmpeg", "-loglevel", "quiet", "-re", "-stream_loop", "-1", "-i",
-        tmp + "-cam" + std::to_string(c) + ".avi", "-c:v", "copy", "-f", "mpjpeg", "-listen", "1", urls[c]}));
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  serve_all();
   row("4 MJPEG/HTTP cameras, 272x480 @ 60", lab, urls, "movenet-lightning", 10);
   servers.clear();
-  for (int c = 0; c < 4; ++c) std::remove((tmp + "-cam" + std::to_string(c) + ".avi").c_str());
+  for (const std::string& avi : avis) std::remove(avi.c_str());
   return 0;
 }

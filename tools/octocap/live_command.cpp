@@ -46,9 +46,12 @@ int live(const LiveOptions& o) {
   capture.set_detector(o.detector.config());
   octocap_up_axis_t up = OCTOCAP_UP_Y;
   {
-    // The up axis the session decided from the cameras, for the TRC.
-    octocap::Session probe(scfg, calib);
-    up = probe.up_axis();
+    // The up axis the session decides from the cameras, for the TRC: asked of a session without outputs, so that no
+    // second publisher joins the stream.
+    octocap_session_config_t quiet = scfg;
+    quiet.stream_enable = 0;
+    quiet.vmc_port = 0;
+    up = octocap::Session(quiet, calib).up_axis();
   }
   std::vector<octocap::MotionWriter> writers;
   // A live take's rate is the cameras'; the files say the nominal one, the frames keep their real timestamps.

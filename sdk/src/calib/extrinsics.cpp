@@ -12,6 +12,7 @@
 #include "calib/bundle_adjustment.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "core/stats.h"
 #include "core/rays.h"
 
 namespace octocap {
@@ -53,11 +54,7 @@ std::string camera_list(const Calibration& calib, const std::vector<int>& idx) {
   return s;
 }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
-}
+double median(std::vector<double> v) { return median_in_place(v, 0); }
 
 // Triangulates every point seen by >= 2 placed cameras that is not yet known; keeps it when it lies in front of
 // them and reprojects within max_px.

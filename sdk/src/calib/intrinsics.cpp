@@ -10,6 +10,7 @@
 #include <regex>
 
 #include "core/error.h"
+#include "io/directories.h"
 #include "core/log.h"
 
 namespace fs = std::filesystem;
@@ -69,14 +70,7 @@ Camera calibrate_intrinsics(const std::string& directory, const BoardSpec& board
                             const std::string& overlay_png) {
   std::error_code ec;
   if (!fs::is_directory(directory, ec)) throw Error(Errc::io, directory + ": not a directory");
-  std::vector<std::string> files;
-  for (const auto& e : fs::directory_iterator(directory, ec)) {
-    std::string ext = e.path().extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (e.is_regular_file() && (ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".bmp" || ext == ".tif"))
-      files.push_back(e.path().string());
-  }
-  std::sort(files.begin(), files.end());
+  const std::vector<std::string> files = sorted_files(directory, {".png", ".jpg", ".jpeg", ".bmp", ".tif"});
   if (files.empty()) throw Error(Errc::io, directory + ": no image files (png, jpg, bmp, tif)");
 
   std::vector<cv::Point3f> board_points;

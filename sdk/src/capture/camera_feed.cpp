@@ -9,18 +9,6 @@
 
 namespace octocap {
 
-const char* feed_state_name(FeedState s) {
-  switch (s) {
-    case FeedState::stopped: return "stopped";
-    case FeedState::connecting: return "connecting";
-    case FeedState::streaming: return "streaming";
-    case FeedState::reconnecting: return "reconnecting";
-    case FeedState::ended: return "ended";
-    case FeedState::failed: return "failed";
-  }
-  return "?";
-}
-
 CameraFeed::CameraFeed(CameraSpec spec, FeedOptions options, std::function<void()> on_frame)
     : spec_(std::move(spec)), options_(options), on_frame_(std::move(on_frame)) {}
 
@@ -70,6 +58,11 @@ bool CameraFeed::take(uint64_t sequence, CapturedFrame& out) {
       return true;
     }
   return false;
+}
+
+bool CameraFeed::done() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return status_.state == FeedState::ended || status_.state == FeedState::failed;
 }
 
 FeedStatus CameraFeed::status() const {

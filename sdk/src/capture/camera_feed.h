@@ -44,6 +44,8 @@ class CameraFeed {
   // Picture `sequence` if it is still kept; it counts as used.
   bool take(uint64_t sequence, CapturedFrame& out);
   FeedStatus status() const;
+  // Ended (a file played out) or failed: nothing more will come.
+  bool done() const;
   double nominal_fps() const { return nominal_fps_.load(); }
   const CameraSpec& spec() const { return spec_; }
 

@@ -56,14 +56,4 @@ CameraSpec parse_camera_spec(const std::string& text) {
   return spec;
 }
 
-const char* source_kind_name(SourceKind kind) {
-  switch (kind) {
-    case SourceKind::device: return "device";
-    case SourceKind::network: return "network";
-    case SourceKind::video_file: return "video file";
-    case SourceKind::picture_folder: return "picture folder";
-  }
-  return "?";
-}
-
 }  // namespace octocap

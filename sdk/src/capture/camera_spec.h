@@ -21,8 +21,6 @@ struct CameraSpec {
 // that does not exist; the message names the spec.
 CameraSpec parse_camera_spec(const std::string& text);
 
-const char* source_kind_name(SourceKind kind);
-
 struct SourceOptions {
   int open_timeout_ms = 5000;
   int read_timeout_ms = 3000;

@@ -8,7 +8,6 @@
 namespace octocap {
 
 enum class FeedState : int { stopped = 0, connecting = 1, streaming = 2, reconnecting = 3, ended = 4, failed = 5 };
-const char* feed_state_name(FeedState s);
 
 struct FeedStatus {
   FeedState state = FeedState::stopped;

@@ -2,14 +2,13 @@
 
 #include <stdlib.h>
 
-#include <algorithm>
-#include <filesystem>
 #include <vector>
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/videoio.hpp>
 
 #include "core/error.h"
+#include "io/directories.h"
 
 namespace octocap {
 namespace {
@@ -66,15 +65,7 @@ class PictureFolderSource : public FrameSource {
   PictureFolderSource(CameraSpec spec, SourceOptions options) : spec_(std::move(spec)), options_(options) {}
 
   void open() override {
-    files_.clear();
-    std::error_code ec;
-    for (const auto& e : std::filesystem::directory_iterator(spec_.location, ec)) {
-      std::string ext = e.path().extension().string();
-      std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-      if (e.is_regular_file() && (ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".bmp"))
-        files_.push_back(e.path().string());
-    }
-    std::sort(files_.begin(), files_.end());
+    files_ = sorted_files(spec_.location, {".png", ".jpg", ".jpeg", ".bmp"});
     if (files_.empty()) throw Error(Errc::io, "camera '" + spec_.text + "': the folder holds no pictures");
     next_ = 0;
   }

@@ -1,6 +1,7 @@
 #include "io/directories.h"
 
 #include <algorithm>
+#include <cctype>
 
 #include "core/error.h"
 
@@ -14,6 +15,19 @@ std::vector<std::filesystem::path> sorted_subdirectories(const std::string& dire
     if (e.is_directory()) dirs.push_back(e.path());
   std::sort(dirs.begin(), dirs.end());
   return dirs;
+}
+
+std::vector<std::string> sorted_files(const std::string& directory, const std::vector<std::string>& extensions) {
+  std::error_code ec;
+  std::vector<std::string> files;
+  for (const auto& e : std::filesystem::directory_iterator(directory, ec)) {
+    std::string ext = e.path().extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (e.is_regular_file() && std::find(extensions.begin(), extensions.end(), ext) != extensions.end())
+      files.push_back(e.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
 }
 
 }  // namespace octocap

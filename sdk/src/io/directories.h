@@ -10,4 +10,8 @@ namespace octocap {
 // `directory` is not a folder.
 std::vector<std::filesystem::path> sorted_subdirectories(const std::string& directory);
 
+// The files of `directory` whose extension (compared without case, with its dot: ".png") is one of `extensions`,
+// sorted by name (the order pictures are taken in); empty when there are none or `directory` is not a folder.
+std::vector<std::string> sorted_files(const std::string& directory, const std::vector<std::string>& extensions);
+
 }  // namespace octocap

@@ -7,6 +7,7 @@
 #include "core/clock.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "core/stats.h"
 
 namespace octocap {
 namespace {
@@ -16,12 +17,6 @@ constexpr size_t kLatencyWindow = 1000;
 // Running mean: stats are means over every frame solved.
 void accumulate(double& mean, double value, uint64_t n) { mean += (value - mean) / static_cast<double>(n); }
 
-double percentile(std::vector<double> v, double p) {
-  if (v.empty()) return 0;
-  const size_t k = std::min(v.size() - 1, static_cast<size_t>(p * static_cast<double>(v.size())));
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
-  return v[k];
-}
 
 }  // namespace
 
@@ -121,8 +116,9 @@ std::shared_ptr<const FrameResult> LiveEngine::take(int timeout_ms) {
 LiveStats LiveEngine::stats() const {
   const std::lock_guard<std::mutex> lock(mutex_);
   LiveStats s = stats_;
-  s.latency_p50_ms = percentile(latencies_ms_, 0.5);
-  s.latency_p99_ms = percentile(latencies_ms_, 0.99);
+  std::vector<double> latencies = latencies_ms_;
+  s.latency_p50_ms = quantile_in_place(latencies, 0.5, 0);
+  s.latency_p99_ms = quantile_in_place(latencies, 0.99, 0);
   return s;
 }
 
@@ -144,8 +140,7 @@ void LiveEngine::run() {
     for (size_t c = 0; c < n; ++c) {
       candidates[c] = feeds_[c]->candidate(last_used[c]);
       any = any || candidates[c].newest.sequence != 0;
-      const FeedState st = feeds_[c]->status().state;
-      all_done = all_done && (st == FeedState::ended || st == FeedState::failed);
+      all_done = all_done && feeds_[c]->done();
     }
     if (!any) {
       if (all_done) break;  // files played out
@@ -153,11 +148,9 @@ void LiveEngine::run() {
     }
     const FrameSetDecision d = decide_frame_set(candidates, monotonic_us(), sync_);
     if (!d.emit && !all_done) continue;  // a camera that delivers is about to: wait for it
-    bool complete = true;
     for (size_t c = 0; c < n; ++c) {
       present[c] = d.take[c] != 0 && feeds_[c]->take(d.take[c], frames[c]);
       if (present[c]) last_used[c] = frames[c].sequence;
-      complete = complete && present[c];
     }
     if (std::none_of(present.begin(), present.end(), [](bool p) { return p; })) {
       // Every camera ended and their last pictures make no set: nothing is left to solve.
@@ -165,8 +158,6 @@ void LiveEngine::run() {
       continue;
     }
     solve_set(frames, present, d.time_us);
-    const std::lock_guard<std::mutex> lock(mutex_);
-    if (!complete) ++stats_.sets_incomplete;
   }
   const std::lock_guard<std::mutex> lock(mutex_);
   stats_.finished = !stop_;
@@ -202,6 +193,7 @@ void LiveEngine::solve_set(const std::vector<CapturedFrame>& frames, const std::
     latest_ = std::move(frame);
     ++latest_serial_;
     const uint64_t k = ++stats_.frame_sets;
+    if (std::find(present.begin(), present.end(), false) != present.end()) ++stats_.sets_incomplete;
     if (solved) ++stats_.frames_with_person;
     const double latency = static_cast<double>(monotonic_us() - oldest_grab) / 1000.0;
     accumulate(stats_.capture_ms, static_cast<double>(t0 - oldest_grab) / 1000.0, k);

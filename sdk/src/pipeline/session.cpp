@@ -62,7 +62,6 @@ Keypoint2D clean(const Keypoint2D& k) {
 Session::Session(const SessionConfig& config, Calibration calib)
     : config_(config), calib_(std::move(calib)), layout_(&layout(config.layout)) {
   validate(config_);
-  if (config_.volume_min != config_.volume_max) config_.volume = Eigen::AlignedBox3d(config_.volume_min, config_.volume_max);
   const int cams = static_cast<int>(calib_.size());
   if (cams < 2) throw Error(Errc::not_enough_views, "a session needs at least 2 cameras, the calibration has " +
                                                         std::to_string(cams));
@@ -74,7 +73,8 @@ Session::Session(const SessionConfig& config, Calibration calib)
   if (sigma_ > cams)
     throw Error(Errc::invalid_argument, "sigma (" + std::to_string(sigma_) + ") exceeds the camera count (" +
                                             std::to_string(cams) + ")");
-  volume_ = config_.volume;
+  // min == max: no volume given, it is derived from the calibration.
+  if (config_.volume_min != config_.volume_max) volume_ = Eigen::AlignedBox3d(config_.volume_min, config_.volume_max);
   if (volume_.isEmpty() || volume_.volume() <= 0) {
     volume_ = derive_capture_volume(calib_);
     if (volume_.isEmpty())

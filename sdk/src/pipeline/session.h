@@ -40,7 +40,6 @@ struct SessionConfig {
   double outlier_threshold_px = 15;
   Eigen::Vector3d volume_min = Eigen::Vector3d::Zero();  // min == max: derived from the calibration
   Eigen::Vector3d volume_max = Eigen::Vector3d::Zero();
-  Eigen::AlignedBox3d volume;  // set from volume_min/max by the session (empty: derived from the calibration)
   double filter_min_cutoff = 1.5;
   double filter_beta = 20.0;
   unsigned threads = 0;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/stats.h"
 #include "solve/triangulation.h"
 
 namespace octocap {
@@ -11,11 +12,7 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-double median(std::vector<double>& v) {
-  if (v.empty()) return kInf;
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
-}
+double median(std::vector<double>& v) { return median_in_place(v, kInf); }
 
 // Median distance between a person's confident keypoints and the projection of known 3D keypoints.
 double distance_to_pose(const Camera& cam, const Person2D& person, const std::vector<Eigen::Vector3d>& pose,

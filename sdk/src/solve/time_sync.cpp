@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/error.h"
+#include "core/stats.h"
 
 namespace octocap {
 namespace {
@@ -36,11 +37,7 @@ double epipolar_px(const PairGeometry& g, const Eigen::Vector2d& na, const Eigen
   return 0.5 * (std::abs(e) / nb2 * g.focal_b + std::abs(e) / na2 * g.focal_a);
 }
 
-double median(std::vector<double>& v) {
-  if (v.empty()) return kInf;
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
-  return v[v.size() / 2];
-}
+double median(std::vector<double>& v) { return median_in_place(v, kInf); }
 
 }  // namespace
 

@@ -1,0 +1,20 @@
+// Order statistics of samples, for the robust costs and the latency figures.
+#pragma once
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+namespace octocap {
+
+// Element floor(p * n) of the sorted samples (p in [0, 1]), found by partial reordering of `v`; `empty` when v holds
+// none.
+inline double quantile_in_place(std::vector<double>& v, double p, double empty) {
+  if (v.empty()) return empty;
+  const size_t k = std::min(v.size() - 1, static_cast<size_t>(p * static_cast<double>(v.size())));
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+  return v[k];
+}
+
+inline double median_in_place(std::vector<double>& v, double empty) { return quantile_in_place(v, 0.5, empty); }
+
+}  // namespace octocap
