@@ -17,6 +17,7 @@
 #include "capture/frame_set.h"
 #include "octocap/octocap.hpp"
 #include "support/child_process.h"
+#include "support/live_helpers.h"
 #include "support/run_command.h"
 #include "support/temp_dir.h"
 
@@ -25,45 +26,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kVideos = std::string(OCTOCAP_SOURCE_DIR) + "/.cache/pose2sim-0.10.49/Demo_SinglePerson/videos/";
-const std::string kDemo = std::string(OCTOCAP_REAL_DATA_DIR) + "/Demo";
-
-std::vector<std::string> demo_videos() {
-  std::vector<std::string> v;
-  for (int c = 1; c <= 4; ++c) v.push_back(kVideos + "cam0" + std::to_string(c) + ".mp4");
-  return v;
-}
-
-octocap_session_config_t coco_session() {
-  octocap_session_config_t cfg;
-  octocap_session_config_init(&cfg);
-  cfg.layout = OCTOCAP_LAYOUT_COCO_17;  // the shipped models' layout
-  cfg.filter = OCTOCAP_FILTER_NONE;
-  return cfg;
-}
-
-octocap_detector_config_t lightning() {
-  octocap_detector_config_t det;
-  octocap_detector_config_init(&det);
-  std::snprintf(det.model, sizeof det.model, "%s", "movenet-lightning");  // the faster model: more sets per second
-  return det;
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 1e9;
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
-  return v[v.size() / 2];
-}
-
-template <class Pred>
-bool wait_until(Pred&& done, int timeout_ms) {
-  const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeout_ms);
-  while (std::chrono::steady_clock::now() < end) {
-    if (done()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  return done();
-}
+using testing::coco_session;
+using testing::demo_videos;
+using testing::kDemo;
+using testing::kVideos;
+using testing::lightning;
+using testing::wait_until;
+const auto median = testing::median_of;
 
 }  // namespace
 

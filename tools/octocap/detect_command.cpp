@@ -39,6 +39,8 @@ void write_openpose(const fs::path& path, const std::vector<std::vector<octocap_
 }
 
 int detect(const DetectOptions& o) {
+  if (o.images.empty() || o.output.empty())
+    throw std::runtime_error("--images and --output are required (or --live, a capture node)");
   ImageSource source(o.images);
   const octocap_detector_config_t cfg = o.detector.config();
   octocap::Detector detector(cfg);
@@ -124,4 +126,6 @@ std::string debug_image_path(const std::string& dir, const std::string& camera, 
   return (fs::path(dir) / name).string();
 }
 
-int run_detect(const DetectOptions& options) { return run_reporting_errors("detect", options, detect); }
+int run_detect(const DetectOptions& options) {
+  return options.live ? run_node(options) : run_reporting_errors("detect", options, detect);
+}

@@ -1,6 +1,7 @@
 #pragma once
 #include <opencv2/core.hpp>
 #include <string>
+#include <vector>
 
 #include "octocap/octocap.h"
 
@@ -21,9 +22,18 @@ struct DetectOptions {
   unsigned max_frames = 0;  // 0: all
   bool quiet = false;
   DetectorOptions detector;
+  // --live: a capture node (cameras in, their 2D keypoints published over DDS for a hub's octocap live).
+  bool live = false, publish_keypoints = false;
+  std::vector<std::string> cameras, camera_names;
+  std::string node = "node1", topic = "octocap";
+  unsigned domain = 0;
+  double duration_s = 0;
+  double picture_rate_hz = 30;
+  double detect_rate_hz = 0;
 };
 
 int run_detect(const DetectOptions& options);
+int run_node(const DetectOptions& options);  // --live (node_command.cpp)
 
 // A BGR OpenCV image as the C ABI's image (borrowed).
 octocap_image_t as_image(const cv::Mat& bgr);

@@ -11,29 +11,23 @@
 #include <string>
 #include <vector>
 
+#include "live_common.h"
 #include "octocap/octocap.hpp"
 
 namespace {
 
-std::atomic<bool> g_interrupted{false};
-extern "C" void on_interrupt(int) { g_interrupted = true; }
-
-void log_to_stderr(octocap_log_level_t level, const char* message, void*) {
-  static const char* names[] = {"debug", "info", "warning", "error"};
-  std::fprintf(stderr, "\noctocap %s: %s\n", names[level], message);
-}
-
-const char* state_name(octocap_camera_state_t s) {
-  static const char* names[] = {"stopped", "connecting", "streaming", "reconnecting", "ended", "failed"};
-  return s >= 0 && s <= 5 ? names[s] : "?";
-}
+using live_common::interrupted;
+using live_common::state_name;
 
 int live(const LiveOptions& o) {
-  octocap_set_log_callback(log_to_stderr, OCTOCAP_LOG_WARNING, nullptr);
+  octocap_set_log_callback(live_common::log_to_stderr, OCTOCAP_LOG_WARNING, nullptr);
   const octocap::Calibration calib = octocap::Calibration::load(o.calibration);
   octocap_live_config_t cfg;
   octocap_live_config_init(&cfg);
   cfg.picture_rate_hz = static_cast<float>(o.picture_rate_hz);
+  // Remote cameras (dds://NODE/CAMERA) are read where this rig streams: one DDS domain and topic per rig.
+  cfg.remote_domain_id = o.out.domain;
+  std::snprintf(cfg.remote_topic, sizeof cfg.remote_topic, "%s", o.out.topic.c_str());
   octocap_session_config_t scfg;
   octocap_session_config_init(&scfg);
   scfg.layout = OCTOCAP_LAYOUT_COCO_17;  // the shipped models' layout
@@ -60,15 +54,14 @@ int live(const LiveOptions& o) {
   if (!o.csv.empty()) writers.emplace_back(o.csv, OCTOCAP_MOTION_CSV, OCTOCAP_LAYOUT_COCO_17, up, rate);
   if (!o.bvh.empty()) writers.emplace_back(o.bvh, OCTOCAP_MOTION_BVH, OCTOCAP_LAYOUT_COCO_17, up, rate);
 
-  std::signal(SIGINT, on_interrupt);
-  std::signal(SIGTERM, on_interrupt);
+  live_common::catch_interrupts();
   capture.start();
   const auto start = std::chrono::steady_clock::now();
   auto last_status = start;
   uint64_t taken = 0;
   for (;;) {
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (g_interrupted || (o.duration_s > 0 && elapsed >= o.duration_s)) break;
+    if (interrupted() || (o.duration_s > 0 && elapsed >= o.duration_s)) break;
     std::optional<octocap::Frame> frame = capture.take(200);
     if (frame) {
       ++taken;
@@ -103,10 +96,12 @@ int live(const LiveOptions& o) {
               s.latency_p99_ms, s.fps);
   for (uint32_t c = 0; c < s.camera_count; ++c) {
     const octocap_camera_status_t cam = capture.camera(c);
-    std::printf("  camera %-10s %-12s %6llu frames, %6llu used, %6llu dropped, reconnects %llu, %.1f fps (says %.1f)\n",
+    std::printf("  camera %-10s %-12s %6llu frames, %6llu used, %6llu dropped, reconnects %llu, %.1f fps (says %.1f)",
                 cam.name, state_name(cam.state), static_cast<unsigned long long>(cam.grabbed),
                 static_cast<unsigned long long>(cam.used), static_cast<unsigned long long>(cam.dropped),
                 static_cast<unsigned long long>(cam.reconnects), cam.fps, cam.nominal_fps);
+    if (o.cameras[c].rfind("dds://", 0) == 0) std::printf(", %s, clock offset %.1f ms", o.cameras[c].c_str(), cam.clock_offset_ms);
+    std::printf("\n");
   }
   if (!o.output.empty()) std::printf("  wrote %s\n", o.output.c_str());
   return 0;

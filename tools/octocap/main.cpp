@@ -69,8 +69,20 @@ int main(int argc, char** argv) {
 
   DetectOptions detect;
   CLI::App* dc = app.add_subcommand("detect", "Detect 2D keypoints in camera images or videos and write OpenPose JSON");
-  dc->add_option("--images", detect.images, "Folder with one video or picture sub-folder per camera")->required()->check(CLI::ExistingDirectory);
-  dc->add_option("--output", detect.output, "Folder for the OpenPose JSON (one <camera>_json sub-folder per camera)")->required();
+  auto* dimages = dc->add_option("--images", detect.images, "Folder with one video or picture sub-folder per camera")->check(CLI::ExistingDirectory);
+  auto* doutput = dc->add_option("--output", detect.output, "Folder for the OpenPose JSON (one <camera>_json sub-folder per camera)");
+  auto* dlive = dc->add_flag("--live", detect.live, "A capture node: detect live cameras and publish their keypoints (with --publish-keypoints) for a hub's `octocap live --camera dds://NODE/CAMERA`");
+  dimages->excludes(dlive);
+  doutput->excludes(dlive);
+  dc->add_option("--camera", detect.cameras, "--live: a camera (as for octocap live), once per camera")->needs(dlive);
+  dc->add_option("--camera-name", detect.camera_names, "--live: the CAMERA of dds://NODE/CAMERA, once per camera (default cam01, cam02, ...)")->needs(dlive);
+  dc->add_flag("--publish-keypoints", detect.publish_keypoints, "--live: publish each camera's 2D keypoints over DDS (\"<topic>_keypoints2d\")")->needs(dlive);
+  dc->add_option("--node", detect.node, "--live: this node's name, the NODE of dds://NODE/CAMERA")->capture_default_str();
+  dc->add_option("--domain", detect.domain, "--live: DDS domain id")->check(CLI::Range(0, 232))->capture_default_str();
+  dc->add_option("--topic", detect.topic, "--live: DDS topic base name")->capture_default_str();
+  dc->add_option("--duration", detect.duration_s, "--live: stop after this many seconds (0: when the cameras end, or Ctrl-C)")->capture_default_str();
+  dc->add_option("--detect-rate", detect.detect_rate_hz, "--live: detections per second and camera, at wall-clock ticks all nodes share (0: the fastest of 60, 30, 20, 15, 12, 10, ... the detector keeps up with); give every node the same")->check(CLI::Range(0.0, 1000.0))->capture_default_str();
+  dc->add_option("--picture-rate", detect.picture_rate_hz, "--live: rate of picture-folder cameras")->check(CLI::PositiveNumber)->capture_default_str();
   dc->add_option("--frames", detect.max_frames, "Detect at most this many frames (0: all)")->capture_default_str();
   dc->add_option("--debug-images", detect.debug_images, "Write each view with its detections drawn as PNG");
   dc->add_flag("--quiet", detect.quiet, "No progress on stderr");
@@ -78,7 +90,7 @@ int main(int argc, char** argv) {
 
   LiveOptions live;
   CLI::App* lv = app.add_subcommand("live", "Capture live from cameras (devices, rtsp://, http://, videos or picture folders as cameras) into 3D");
-  lv->add_option("--camera", live.cameras, "A camera, once per camera in calibration order: /dev/videoN or N, rtsp://..., http://... (MJPEG), a video file, a picture folder")->required();
+  lv->add_option("--camera", live.cameras, "A camera, once per camera in calibration order: /dev/videoN or N, rtsp://..., http://... (MJPEG), a video file, a picture folder, or dds://NODE/CAMERA (a capture node's keypoints, on --domain/--topic)")->required();
   lv->add_option("--calibration", live.calibration, "Calibration TOML (anipose / Pose2Sim)")->required()->check(CLI::ExistingFile);
   lv->add_option("--duration", live.duration_s, "Stop after this many seconds (0: when the cameras end, or Ctrl-C)")->capture_default_str();
   lv->add_option("--picture-rate", live.picture_rate_hz, "Rate of picture-folder cameras, and the rate written to the TRC")->check(CLI::PositiveNumber)->capture_default_str();

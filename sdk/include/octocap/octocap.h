@@ -83,7 +83,7 @@ extern "C" {
 
 /** Version of this header. The library's own is octocap_version_number(). */
 #define OCTOCAP_VERSION_MAJOR 1
-#define OCTOCAP_VERSION_MINOR 0
+#define OCTOCAP_VERSION_MINOR 1
 #define OCTOCAP_VERSION_PATCH 0
 /** MAJOR * 10000 + MINOR * 100 + PATCH: 10000 for 1.0.0. */
 #define OCTOCAP_VERSION_NUMBER (OCTOCAP_VERSION_MAJOR * 10000 + OCTOCAP_VERSION_MINOR * 100 + OCTOCAP_VERSION_PATCH)
@@ -697,9 +697,12 @@ OCTOCAP_API octocap_result_t octocap_session_reset(octocap_session_t* session);
  * overload the oldest picture or frame is dropped and counted, so latency stays bounded.
  *
  * Cameras are given as strings, in calibration order: a V4L2 device ("/dev/video0" or "0"), a network camera
- * ("rtsp://...", "http://..." MJPEG), a video file (played at its own frame rate, as a camera would deliver it) or a
- * folder of pictures (played at `picture_rate_hz`). A network camera or device that breaks is reopened with
- * back-off while the others go on; files and folders end.
+ * ("rtsp://...", "http://..." MJPEG), a video file (played at its own frame rate, as a camera would deliver it), a
+ * folder of pictures (played at `picture_rate_hz`), or a remote camera "dds://NODE/CAMERA": the 2D keypoints a capture
+ * node (octocap_node_*, below) detects in its pictures, received over DDS and assembled into frame sets exactly as
+ * local pictures are (a hub whose cameras are all remote loads no detector). A network camera or device that breaks
+ * is reopened with back-off while the others go on; a remote camera whose node falls silent for `read_timeout_ms` is
+ * RECONNECTING until its keypoints come again; files and folders end.
  *
  * Threads: the control calls (set_detector, start, stop, destroy) from one thread at a time. The frame and status
  * queries may be called from any thread, also while the engine runs (an engine's game loop, a UI).
@@ -714,12 +717,15 @@ typedef struct octocap_live_config_t {
   uint32_t struct_size;          /**< sizeof(octocap_live_config_t); set by octocap_live_config_init(). */
   uint32_t sync_tolerance_us;    /**< Pictures within this of a set's time belong to it. 0 (default): half a frame period
                                       of the slowest camera. */
-  uint32_t max_wait_us;          /**< A set goes out with the cameras it has once its oldest picture waited this long.
-                                      0 (default): one frame period of the slowest camera. */
+  uint32_t max_wait_us;          /**< A set goes out without a camera that has been silent this long.
+                                      0 (default): 1.5 frame periods of the slowest camera (its measured rate when it delivers slower than it says). */
   uint32_t open_timeout_ms;      /**< Opening a camera gives up after this. Default 5000. */
   uint32_t read_timeout_ms;      /**< A live camera silent this long is broken and reopened. Default 3000. */
   uint32_t reconnect_max_ms;     /**< Longest back-off between reopen attempts (it starts at 100 ms). Default 2000. */
   float picture_rate_hz;         /**< Rate of picture-folder cameras. Default 30. */
+  /* 1.1 */
+  uint32_t remote_domain_id;     /**< DDS domain of remote cameras' keypoints. Default 0. */
+  char remote_topic[OCTOCAP_NAME_CAPACITY]; /**< Their topic base name ("<name>_keypoints2d"). Default "octocap". */
 } octocap_live_config_t;
 
 /** Fills the first `struct_size` bytes of `cfg` with defaults (STRUCT_SIZE for an unknown size). Call it through
@@ -771,7 +777,13 @@ typedef struct octocap_camera_status_t {
   uint64_t reconnects;           /**< Times a broken live camera was reopened. */
   float fps;                     /**< Pictures per second read (smoothed). */
   float nominal_fps;             /**< What the camera says it delivers (0 when it does not say). */
-  char name[OCTOCAP_NAME_CAPACITY]; /**< The calibration's name of this camera. */
+  char name[OCTOCAP_NAME_CAPACITY]; /**< The calibration's name of this camera (a node's own name of it, for a node). */
+  /* 1.1 */
+  float clock_offset_ms;         /**< Remote cameras: how far behind their capture time (less the node's processing)
+                                      keypoints arrive, the least of the last few hundred: network transit plus how far
+                                      the node's clock lags this host's. Frame sets are matched on capture times
+                                      corrected by it. Tens of ms or more, or negative: the clocks disagree (NTP/PTP).
+                                      0 for local cameras. */
 } octocap_camera_status_t;
 
 /**
@@ -810,6 +822,84 @@ OCTOCAP_API octocap_result_t octocap_live_get_frame(const octocap_live_t* live, 
 OCTOCAP_API octocap_result_t octocap_live_get_stats(const octocap_live_t* live, octocap_live_stats_t* out);
 /** Camera `index`'s figures (`out->struct_size` set by the caller). */
 OCTOCAP_API octocap_result_t octocap_live_get_camera_status(const octocap_live_t* live, uint32_t index,
+                                                            octocap_camera_status_t* out);
+
+/** @} */
+/* ------------------------------------------------------------------------------------------------------ */
+/** @name Capture nodes: more cameras than one machine can detect
+ *
+ * A node runs some cameras on one machine: each camera is detected on its own thread, at wall-clock ticks every node
+ * shares (a slow detector skips pictures, counted, never queues them), and its 2D keypoints, stamped with their capture time on the
+ * node's wall clock, are published over Cyclone DDS on "<topic>_keypoints2d". A hub takes them as cameras
+ * "dds://NODE/CAMERA" of a live capture and solves them with its other cameras. Node and hub clocks must agree to
+ * well under a frame period (NTP on a LAN is a millisecond or so; PTP better): the hub reports each remote camera's
+ * measured offset (octocap_camera_status_t.clock_offset_ms). Needs a build with DDS (UNSUPPORTED otherwise).
+ *
+ * Threads: as for a live capture.
+ */
+/** @{ */
+
+/** Opaque capture node. */
+typedef struct octocap_node_t octocap_node_t;
+
+/** Capture node configuration. Fill with octocap_node_config_init() first. */
+typedef struct octocap_node_config_t {
+  uint32_t struct_size;          /**< sizeof(octocap_node_config_t); set by octocap_node_config_init(). */
+  char name[OCTOCAP_NAME_CAPACITY]; /**< The NODE of dds://NODE/CAMERA: 1 to 31 bytes, no '/'. Default "node1". */
+  uint32_t domain_id;            /**< DDS domain. Default 0. */
+  char topic[OCTOCAP_NAME_CAPACITY]; /**< Topic base name ("<name>_keypoints2d"). Default "octocap". */
+  uint32_t open_timeout_ms;      /**< As in ::octocap_live_config_t. Default 5000. */
+  uint32_t read_timeout_ms;      /**< Default 3000. */
+  uint32_t reconnect_max_ms;     /**< Default 2000. */
+  float picture_rate_hz;         /**< Default 30. */
+  float detect_rate_hz;          /**< Detections per second and camera, at wall-clock ticks every node shares (the
+                                      pictures nearest k / rate s since 1970), so that a hub's frame sets find views of
+                                      one instant; a tick the detector cannot keep up with is skipped. 0 (default): the
+                                      fastest of 60, 30, 20, 15, 12, 10, 6, 5, 4, 3, 2, 1 it keeps up with (rates that
+                                      meet at common ticks); give every node the same rate for whole sets at it. */
+} octocap_node_config_t;
+
+/** Fills the first `struct_size` bytes of `cfg` with defaults. Call it through octocap_node_config_init(). */
+OCTOCAP_API octocap_result_t octocap_node_config_defaults(octocap_node_config_t* cfg, uint32_t struct_size);
+/** Fills `cfg` with this library's defaults; inline, so it never writes past the caller's struct. */
+static inline void octocap_node_config_init(octocap_node_config_t* cfg) {
+  (void)octocap_node_config_defaults(cfg, (uint32_t)sizeof *cfg);
+}
+
+/** A node's figures. `struct_size` is set by the caller. */
+typedef struct octocap_node_stats_t {
+  uint32_t struct_size;          /**< Set by the caller to sizeof(octocap_node_stats_t). */
+  uint32_t running;              /**< 1 between start and stop. */
+  uint32_t finished;             /**< 1 when every camera ended (files and folders played out). */
+  uint32_t camera_count;
+  uint64_t published;            /**< Views published, all cameras together. */
+  uint64_t with_person;          /**< Of those, views with at least one person. */
+  float detect_ms;               /**< 2D detection per view, mean. */
+  float processing_ms;           /**< Grab -> published, mean. */
+  uint32_t readers;              /**< Hubs reading the keypoints now. */
+} octocap_node_stats_t;
+
+/**
+ * Creates a capture node over `camera_count` cameras (any camera string of a live capture but "dds://"), named by
+ * `names` (the CAMERA of dds://NODE/CAMERA; NULL: "cam01", "cam02", ...). Nothing is opened yet. Errors: IO (a file,
+ * folder or device that does not exist), INVALID_ARGUMENT (bad names, an unknown scheme, no camera), UNSUPPORTED (no
+ * DDS in this build), STRUCT_SIZE.
+ */
+OCTOCAP_API octocap_result_t octocap_node_create(const octocap_node_config_t* cfg, const char* const* cameras,
+                                                 const char* const* names, uint32_t camera_count, octocap_node_t** out);
+/** Sets the detector of every camera (loaded at start) before start. INVALID_ARGUMENT while running. */
+OCTOCAP_API octocap_result_t octocap_node_set_detector(octocap_node_t* node, const octocap_detector_config_t* cfg);
+/** Loads the detectors, opens every camera (IO naming one that cannot be opened), starts publishing.
+ *  INVALID_ARGUMENT when already running. */
+OCTOCAP_API octocap_result_t octocap_node_start(octocap_node_t* node);
+/** Stops publishing and closes the cameras. Stopping a stopped node is OK. */
+OCTOCAP_API octocap_result_t octocap_node_stop(octocap_node_t* node);
+/** Stops (if running) and destroys; NULL is accepted. */
+OCTOCAP_API void octocap_node_destroy(octocap_node_t* node);
+/** The node's figures (`out->struct_size` set by the caller). */
+OCTOCAP_API octocap_result_t octocap_node_get_stats(const octocap_node_t* node, octocap_node_stats_t* out);
+/** Camera `index`'s figures, `name` being the node's name of it (`out->struct_size` set by the caller). */
+OCTOCAP_API octocap_result_t octocap_node_get_camera_status(const octocap_node_t* node, uint32_t index,
                                                             octocap_camera_status_t* out);
 
 /** @} */

@@ -253,6 +253,40 @@ class Live {
   detail::Owned<octocap_live_t, octocap_live_destroy> l_;
 };
 
+/** A capture node (octocap_node_*): its cameras' 2D keypoints published over DDS for a hub. */
+class Node {
+ public:
+  Node(const octocap_node_config_t& cfg, const std::vector<std::string>& cameras,
+       const std::vector<std::string>& names = {}) {
+    std::vector<const char*> specs, ids;
+    for (const std::string& c : cameras) specs.push_back(c.c_str());
+    for (const std::string& n : names) ids.push_back(n.c_str());
+    octocap_node_t* n = nullptr;
+    check(octocap_node_create(&cfg, specs.data(), names.empty() ? nullptr : ids.data(),
+                              static_cast<uint32_t>(specs.size()), &n),
+          "creating the capture node");
+    n_.reset(n);
+  }
+  void set_detector(const octocap_detector_config_t& cfg) { check(octocap_node_set_detector(n_.get(), &cfg), "detector"); }
+  void start() { check(octocap_node_start(n_.get()), "starting the capture node"); }
+  void stop() { check(octocap_node_stop(n_.get()), "stopping the capture node"); }
+  octocap_node_stats_t stats() const {
+    octocap_node_stats_t s{};
+    s.struct_size = sizeof s;
+    check(octocap_node_get_stats(n_.get(), &s), "node stats");
+    return s;
+  }
+  octocap_camera_status_t camera(uint32_t index) const {
+    octocap_camera_status_t c{};
+    c.struct_size = sizeof c;
+    check(octocap_node_get_camera_status(n_.get(), index, &c), "camera status");
+    return c;
+  }
+
+ private:
+  detail::Owned<octocap_node_t, octocap_node_destroy> n_;
+};
+
 class Recording {
  public:
   Recording(const std::string& dir, octocap_layout_t layout = OCTOCAP_LAYOUT_AUTO) {

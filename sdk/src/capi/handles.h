@@ -11,6 +11,9 @@
 #include "io/openpose_json.h"
 #include "octocap/octocap.h"
 #include "pipeline/live_engine.h"
+#ifdef OCTOCAP_HAVE_DDS
+#include "pipeline/keypoint_node.h"
+#endif
 #include "pipeline/session.h"
 #include "rig/motion_source.h"
 #include "rig/motion_writer.h"
@@ -54,6 +57,12 @@ struct octocap_motion_t {
 
 struct octocap_live_t {
   std::unique_ptr<octocap::LiveEngine> engine;
+};
+
+struct octocap_node_t {
+#ifdef OCTOCAP_HAVE_DDS
+  std::unique_ptr<octocap::KeypointNode> node;
+#endif
 };
 
 struct octocap_subscriber_t {

@@ -1,11 +1,14 @@
 // Live capture handles: the C shell over pipeline/live_engine.
+#include <cstddef>
 #include <cstring>
 
 #include "capi/boundary.h"
 #include "capi/detect_c.h"
 #include "capi/frame_queries.h"
 #include "capi/handles.h"
+#include "capi/live_c.h"
 #include "capi/session_c.h"
+#include "capi/stream_c.h"
 #include "capi/struct_versions.h"
 
 using namespace octocap;
@@ -15,9 +18,27 @@ namespace {
 LiveEngine& engine_of(octocap_live_t* l) { return *capi::checked(l, "live")->engine; }
 const LiveEngine& engine_of(const octocap_live_t* l) { return *capi::checked(l, "live")->engine; }
 
-octocap_camera_state_t state_c(FeedState s) { return static_cast<octocap_camera_state_t>(s); }
-
 }  // namespace
+
+namespace octocap::capi {
+
+void fill_camera_status(const FeedStatus& s, const std::string& name, octocap_camera_status_t* out) {
+  // 1.0's struct ended before clock_offset_ms: its callers get what their size holds.
+  fill_sized(out, offsetof(octocap_camera_status_t, clock_offset_ms), "octocap_camera_status_t",
+             [&](octocap_camera_status_t& o) {
+    o.state = static_cast<octocap_camera_state_t>(s.state);
+    o.grabbed = s.grabbed;
+    o.used = s.used;
+    o.dropped = s.dropped;
+    o.reconnects = s.reconnects;
+    o.fps = static_cast<float>(s.fps);
+    o.nominal_fps = static_cast<float>(s.nominal_fps);
+    copy_name(o.name, sizeof o.name, name);
+    o.clock_offset_ms = static_cast<float>(s.clock_offset_ms);
+  });
+}
+
+}  // namespace octocap::capi
 
 extern "C" {
 
@@ -30,6 +51,7 @@ octocap_result_t octocap_live_config_defaults(octocap_live_config_t* c, uint32_t
     d.read_timeout_ms = 3000;
     d.reconnect_max_ms = 2000;
     d.picture_rate_hz = 30;
+    capi::copy_name(d.remote_topic, sizeof d.remote_topic, "octocap");
     capi::write_defaults(c, struct_size, d);
   });
 }
@@ -44,7 +66,9 @@ octocap_result_t octocap_live_create(const octocap_live_config_t* given, const o
     capi::check_size(given->struct_size, capi::kLiveConfigSizes, "octocap_live_config_t");
     capi::checked(calib, "calibration");
     if (camera_count > 0) capi::require(cameras, "cameras");
-    octocap_live_config_t c = *given;
+    octocap_live_config_t defaults;
+    octocap_live_config_init(&defaults);
+    const octocap_live_config_t c = capi::widen(*given, defaults);
     capi::require_finite(c.picture_rate_hz, "cfg.picture_rate_hz");
     if (!(c.picture_rate_hz >= 0.01f && c.picture_rate_hz <= 1000.0f))
       throw Error(Errc::invalid_argument, "cfg.picture_rate_hz must be 0.01 to 1000");
@@ -60,6 +84,8 @@ octocap_result_t octocap_live_create(const octocap_live_config_t* given, const o
     config.feeds.reconnect_max_ms = static_cast<int>(c.reconnect_max_ms);
     config.sync_tolerance_us = c.sync_tolerance_us;
     config.max_wait_us = c.max_wait_us;
+    config.remote_domain_id = capi::domain_id(c.remote_domain_id);
+    config.remote_topic = capi::topic_name(c.remote_topic, sizeof c.remote_topic, "cfg.remote_topic");
     std::vector<std::string> specs;
     for (uint32_t i = 0; i < camera_count; ++i) {
       if (!cameras[i]) throw Error(Errc::invalid_argument, "camera " + std::to_string(i) + " is NULL");
@@ -149,17 +175,7 @@ octocap_result_t octocap_live_get_camera_status(const octocap_live_t* l, uint32_
     if (index >= e.camera_count())
       throw Error(Errc::invalid_argument, "camera " + std::to_string(index) + " out of range (" +
                                               std::to_string(e.camera_count()) + " cameras)");
-    capi::fill_sized(out, sizeof(octocap_camera_status_t), "octocap_camera_status_t", [&](octocap_camera_status_t& o) {
-      const FeedStatus s = e.camera_status(index);
-      o.state = state_c(s.state);
-      o.grabbed = s.grabbed;
-      o.used = s.used;
-      o.dropped = s.dropped;
-      o.reconnects = s.reconnects;
-      o.fps = static_cast<float>(s.fps);
-      o.nominal_fps = static_cast<float>(s.nominal_fps);
-      capi::copy_name(o.name, sizeof o.name, e.camera_name(index));
-    });
+    capi::fill_camera_status(e.camera_status(index), e.camera_name(index), out);
   });
 }
 

@@ -12,25 +12,33 @@ using namespace octocap;
 
 namespace octocap::capi {
 
-StreamConfig stream_config(uint32_t domain_id, int32_t qos, uint32_t history_depth, uint32_t source_id,
+std::string topic_name(const char* topic, size_t topic_capacity, const char* what) {
+  const size_t len = strnlen(topic, topic_capacity);
+  if (len == 0 || len == topic_capacity)
+    throw Error(Errc::invalid_argument, std::string(what) + " must be a NUL-terminated, non-empty name");
+  for (size_t i = 0; i < len; ++i)
+    if (!std::isalnum(static_cast<unsigned char>(topic[i])) && topic[i] != '_')
+      throw Error(Errc::invalid_argument, std::string(what) + " may hold letters, digits and '_' only");
+  return std::string(topic, len);
+}
+
+uint32_t domain_id(uint32_t id) {
+  if (id > 232) throw Error(Errc::invalid_argument, "DDS domain id must be 0..232");
+  return id;
+}
+
+StreamConfig stream_config(uint32_t domain, int32_t qos, uint32_t history_depth, uint32_t source_id,
                            const char* topic, size_t topic_capacity) {
   StreamConfig s;
-  if (domain_id > 232) throw Error(Errc::invalid_argument, "DDS domain id must be 0..232");
+  s.domain_id = domain_id(domain);
   if (qos != OCTOCAP_QOS_LIVE && qos != OCTOCAP_QOS_RECORD)
     throw Error(Errc::invalid_argument, "stream qos must be OCTOCAP_QOS_LIVE or OCTOCAP_QOS_RECORD");
   if (history_depth < 1 || history_depth > 100000)
     throw Error(Errc::invalid_argument, "stream history depth must be 1..100000");
-  const size_t len = strnlen(topic, topic_capacity);
-  if (len == 0 || len == topic_capacity)
-    throw Error(Errc::invalid_argument, "stream topic must be a NUL-terminated, non-empty name");
-  for (size_t i = 0; i < len; ++i)
-    if (!std::isalnum(static_cast<unsigned char>(topic[i])) && topic[i] != '_')
-      throw Error(Errc::invalid_argument, "stream topic may hold letters, digits and '_' only");
-  s.domain_id = domain_id;
+  s.topic = topic_name(topic, topic_capacity, "stream topic");
   s.qos = static_cast<StreamQos>(qos);
   s.history_depth = history_depth;
   s.source_id = source_id;
-  s.topic.assign(topic, len);
   return s;
 }
 

@@ -2,11 +2,16 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 #include "stream/stream_config.h"
 
 namespace octocap::capi {
 
+// A DDS topic base name from a C char array: NUL-terminated, non-empty, letters, digits and '_'.
+std::string topic_name(const char* topic, size_t topic_capacity, const char* what);
+// 0..232 (Cyclone's domain ids).
+uint32_t domain_id(uint32_t id);
 StreamConfig stream_config(uint32_t domain_id, int32_t qos, uint32_t history_depth, uint32_t source_id,
                            const char* topic, size_t topic_capacity);
 

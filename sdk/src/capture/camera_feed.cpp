@@ -10,17 +10,13 @@
 namespace octocap {
 
 CameraFeed::CameraFeed(CameraSpec spec, FeedOptions options, std::function<void()> on_frame)
-    : spec_(std::move(spec)), options_(options), on_frame_(std::move(on_frame)) {}
+    : Feed(std::move(spec), std::move(on_frame)), options_(options) {}
 
 CameraFeed::~CameraFeed() { stop(); }
 
 void CameraFeed::start() {
   if (thread_.joinable()) throw Error(Errc::invalid_argument, "camera '" + spec_.text + "' is already running");
-  {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    status_ = FeedStatus{};
-    status_.state = FeedState::connecting;
-  }
+  reset_status(FeedState::connecting);
   source_ = make_frame_source(spec_, options_.source);
   source_->open();  // throws, naming the camera
   nominal_fps_ = source_->nominal_fps();
@@ -34,42 +30,6 @@ void CameraFeed::stop() {
   if (thread_.joinable()) thread_.join();
   const std::lock_guard<std::mutex> lock(mutex_);
   if (status_.state != FeedState::ended && status_.state != FeedState::failed) status_.state = FeedState::stopped;
-}
-
-Candidate CameraFeed::candidate(uint64_t after) const {
-  const std::lock_guard<std::mutex> lock(mutex_);
-  Candidate c;
-  const CapturedFrame& newest = slots_[0].frame;
-  const CapturedFrame& previous = slots_[1].frame;
-  c.last_us = newest.sequence ? newest.grab_us : 0;
-  if (newest.sequence > after && !slots_[0].used) c.newest = {newest.sequence, newest.grab_us};
-  if (previous.sequence > after && !slots_[1].used) c.previous = {previous.sequence, previous.grab_us};
-  if (!c.newest.sequence && c.previous.sequence) std::swap(c.newest, c.previous);
-  return c;
-}
-
-bool CameraFeed::take(uint64_t sequence, CapturedFrame& out) {
-  const std::lock_guard<std::mutex> lock(mutex_);
-  for (Slot& s : slots_)
-    if (s.frame.sequence == sequence && sequence != 0) {
-      out = s.frame;  // cv::Mat shares the pixels: the feed writes each picture into a fresh buffer
-      if (!s.used) ++status_.used;
-      s.used = true;
-      return true;
-    }
-  return false;
-}
-
-bool CameraFeed::done() const {
-  const std::lock_guard<std::mutex> lock(mutex_);
-  return status_.state == FeedState::ended || status_.state == FeedState::failed;
-}
-
-FeedStatus CameraFeed::status() const {
-  const std::lock_guard<std::mutex> lock(mutex_);
-  FeedStatus s = status_;
-  s.nominal_fps = nominal_fps_.load();
-  return s;
 }
 
 bool CameraFeed::reopen() {
@@ -88,8 +48,7 @@ bool CameraFeed::reopen() {
       log(LogLevel::info, "camera '" + spec_.text + "': reconnected");
       return true;
     } catch (const Error& e) {
-      const std::lock_guard<std::mutex> lock(mutex_);
-      status_.last_error = e.what();
+      set_error(e.what());
     }
     wait_ms = std::min(2 * wait_ms, options_.reconnect_max_ms);
   }
@@ -97,14 +56,10 @@ bool CameraFeed::reopen() {
 }
 
 void CameraFeed::run() {
-  {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    status_.state = FeedState::streaming;
-  }
+  set_state(FeedState::streaming);
   const bool pace = options_.pace_files && !spec_.live();
   int64_t start_us = 0;
   bool started = false;
-  int64_t last_grab_us = 0;
   while (!stop_) {
     cv::Mat image;  // a fresh buffer each time: a consumer may still hold the previous picture
     int64_t stream_us = 0;
@@ -112,8 +67,7 @@ void CameraFeed::run() {
     try {
       ok = source_->read(image, stream_us);
     } catch (const Error& e) {
-      const std::lock_guard<std::mutex> lock(mutex_);
-      status_.last_error = e.what();
+      set_error(e.what());
     }
     if (!ok) {
       if (!spec_.live()) {
@@ -139,23 +93,13 @@ void CameraFeed::run() {
                      [&] { return stop_.load(); });
       if (stop_) break;
     }
-    const int64_t now = monotonic_us();
-    {
-      const std::lock_guard<std::mutex> lock(mutex_);
-      if (!slots_[1].used) ++status_.dropped;  // pushed out unused
-      slots_[1] = std::move(slots_[0]);
-      slots_[0].frame = CapturedFrame{image, now, stream_us, ++sequence_};
-      slots_[0].used = false;
-      ++status_.grabbed;
-      if (last_grab_us > 0 && now > last_grab_us) {
-        // Smoothed on the interval, not on its inverse: a burst of catch-up reads must not read as a faster camera.
-        const double dt = static_cast<double>(now - last_grab_us);
-        mean_interval_us_ = mean_interval_us_ > 0 ? 0.9 * mean_interval_us_ + 0.1 * dt : dt;
-        status_.fps = 1e6 / mean_interval_us_;
-      }
-      last_grab_us = now;
-    }
-    if (on_frame_) on_frame_();
+    CapturedFrame frame;
+    frame.width = image.cols;
+    frame.height = image.rows;
+    frame.image = std::move(image);
+    frame.grab_us = monotonic_us();
+    frame.stream_us = stream_us;
+    deliver(std::move(frame));
   }
 }
 

@@ -37,9 +37,24 @@ CameraSpec parse_camera_spec(const std::string& text) {
   const size_t scheme = text.find("://");
   if (scheme != std::string::npos) {
     const std::string s = text.substr(0, scheme);
+    if (s == "dds") {
+      const std::string rest = text.substr(scheme + 3);
+      const size_t slash = rest.find('/');
+      spec.kind = SourceKind::remote;
+      spec.node = rest.substr(0, slash);
+      spec.camera = slash == std::string::npos ? "" : rest.substr(slash + 1);
+      auto bad = [](const std::string& name) {
+        return name.empty() || name.size() > 31 || name.find('/') != std::string::npos;
+      };
+      if (bad(spec.node) || bad(spec.camera))
+        throw Error(Errc::invalid_argument, "camera '" + text + "': a remote camera is dds://NODE/CAMERA (names of 1 to "
+                                                "31 bytes, as the node publishes them)");
+      spec.location = text;
+      return spec;
+    }
     if (s != "rtsp" && s != "rtsps" && s != "http" && s != "https")
       throw Error(Errc::invalid_argument, "camera '" + text + "': unknown scheme '" + s +
-                                              "://' (rtsp://, rtsps://, http://, https:// are cameras)");
+                                              "://' (rtsp://, rtsps://, http://, https:// are cameras, dds:// a capture node's)");
     spec.kind = SourceKind::network;
     spec.location = text;
     return spec;

@@ -17,6 +17,10 @@ struct FeedStatus {
   uint64_t reconnects = 0;  // times a live source was reopened after a break
   double fps = 0;           // pictures per second read, smoothed
   double nominal_fps = 0;   // what the source says it delivers (0: it does not say)
+  // Remote cameras: how far behind their capture time (less the node's own processing) keypoints arrive, the least
+  // of the last few hundred: network transit plus how far the node's clock is behind this host's. Frame sets are
+  // matched on capture times corrected by it. 0 for local cameras.
+  double clock_offset_ms = 0;
   std::string last_error;
 };
 

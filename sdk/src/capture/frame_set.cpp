@@ -11,7 +11,7 @@ FrameSetDecision decide_frame_set(const std::vector<Candidate>& cameras, int64_t
   d.take.assign(n, 0);
   auto offset = [&](size_t c) { return c < o.offsets_us.size() ? o.offsets_us[c] : 0; };
   auto fresh = [&](size_t c) {
-    return cameras[c].newest.sequence != 0 && now_us - cameras[c].newest.time_us <= o.max_wait_us;
+    return cameras[c].newest.sequence != 0 && now_us - cameras[c].newest.arrived() <= o.max_wait_us;
   };
   bool any = false;
   int64_t set_time = 0;
@@ -37,7 +37,7 @@ FrameSetDecision decide_frame_set(const std::vector<Candidate>& cameras, int64_t
   // A camera left out is awaited when it delivered within max_wait: its next picture is about to come.
   bool awaited = false;
   for (size_t c = 0; c < n; ++c)
-    if (d.take[c] == 0 && cameras[c].last_us > 0 && now_us - cameras[c].last_us <= o.max_wait_us) awaited = true;
+    if (d.take[c] == 0 && cameras[c].last_us > 0 && now_us - cameras[c].last_arrived() <= o.max_wait_us) awaited = true;
   d.emit = in_set > 0 && (in_set == n || !awaited);
   d.time_us = set_time;
   if (!d.emit) std::fill(d.take.begin(), d.take.end(), 0);

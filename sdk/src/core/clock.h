@@ -11,3 +11,17 @@ inline int64_t monotonic_us() {
 }
 
 }  // namespace octocap
+
+namespace octocap {
+
+// Wall clock (µs since 1970): the one clock two machines can share (NTP, PTP). Only for stamps that travel.
+inline int64_t wall_clock_us() {
+  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+// A monotonic stamp of this host as wall-clock time, and back (the offset read now: both clocks tick alike).
+inline int64_t monotonic_to_wall_us(int64_t mono_us) { return mono_us + (wall_clock_us() - monotonic_us()); }
+inline int64_t wall_to_monotonic_us(int64_t wall_us) { return wall_us - (wall_clock_us() - monotonic_us()); }
+
+}  // namespace octocap

@@ -4,6 +4,9 @@
 #include <chrono>
 
 #include "capture/camera_feed.h"
+#ifdef OCTOCAP_HAVE_DDS
+#include "stream/remote_feed.h"
+#endif
 #include "core/clock.h"
 #include "core/error.h"
 #include "core/log.h"
@@ -25,14 +28,26 @@ LiveEngine::LiveEngine(const LiveConfig& config, Calibration calib, const std::v
   if (cameras.size() != calib_.size())
     throw Error(Errc::camera_mismatch, std::to_string(cameras.size()) + " cameras given, the calibration has " +
                                            std::to_string(calib_.size()) + " (give them in calibration order)");
-  for (size_t c = 0; c < cameras.size(); ++c)
-    feeds_.push_back(std::make_unique<CameraFeed>(parse_camera_spec(cameras[c]), config_.feeds, [this] {
-      {
-        const std::lock_guard<std::mutex> lock(mutex_);
-        input_pending_ = true;
-      }
-      new_input_.notify_one();
-    }));
+  auto wake = [this] {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      input_pending_ = true;
+    }
+    new_input_.notify_one();
+  };
+  for (size_t c = 0; c < cameras.size(); ++c) {
+    CameraSpec spec = parse_camera_spec(cameras[c]);
+    if (spec.kind != SourceKind::remote) {
+      feeds_.push_back(std::make_unique<CameraFeed>(std::move(spec), config_.feeds, wake));
+      continue;
+    }
+#ifdef OCTOCAP_HAVE_DDS
+    if (!receiver_) receiver_ = std::make_shared<KeypointReceiver>(config_.remote_domain_id, config_.remote_topic);
+    feeds_.push_back(std::make_unique<RemoteFeed>(std::move(spec), config_.feeds, receiver_, wake));
+#else
+    throw Error(Errc::unsupported, "camera '" + cameras[c] + "': remote cameras need DDS, which this build has not");
+#endif
+  }
   if (!config_.latency_offsets_us.empty() && config_.latency_offsets_us.size() != cameras.size())
     throw Error(Errc::invalid_argument, "latency offsets: one per camera");
   session_ = std::make_unique<Session>(config_.session, calib_);
@@ -60,7 +75,9 @@ void LiveEngine::set_latency_offsets(const std::vector<int64_t>& offsets_us) {
 
 void LiveEngine::start() {
   if (running_) throw Error(Errc::invalid_argument, "the live engine is already running");
-  if (!session_->detector()) session_->set_detector(config_.session.detector);  // fail before opening cameras
+  // Fail before opening cameras; a hub whose cameras are all remote needs no detector (nor models).
+  const bool local = std::any_of(feeds_.begin(), feeds_.end(), [](const auto& f) { return f->spec().kind != SourceKind::remote; });
+  if (local && !session_->detector()) session_->set_detector(config_.session.detector);
   size_t opened = 0;
   try {
     for (; opened < feeds_.size(); ++opened) feeds_[opened]->start();
@@ -68,14 +85,9 @@ void LiveEngine::start() {
     for (size_t c = 0; c < opened; ++c) feeds_[c]->stop();
     throw;
   }
-  double slowest = 0;
-  for (const auto& f : feeds_)
-    if (f->nominal_fps() > 0) slowest = slowest > 0 ? std::min(slowest, f->nominal_fps()) : f->nominal_fps();
-  if (slowest <= 0) slowest = 30;
   sync_ = FrameSetOptions{};
-  sync_.tolerance_us = config_.sync_tolerance_us > 0 ? config_.sync_tolerance_us : static_cast<int64_t>(0.5e6 / slowest);
-  sync_.max_wait_us = config_.max_wait_us > 0 ? config_.max_wait_us : static_cast<int64_t>(1e6 / slowest);
   sync_.offsets_us = config_.latency_offsets_us;
+  update_sync_window();
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     stats_ = LiveStats{};
@@ -86,6 +98,22 @@ void LiveEngine::start() {
   stop_ = false;
   running_ = true;
   thread_ = std::thread([this] { run(); });
+}
+
+void LiveEngine::update_sync_window() {
+  double slowest = 0;
+  for (const auto& f : feeds_) {
+    double fps = f->nominal_fps();
+    const double measured = f->fps();
+    if (measured > 0 && (fps <= 0 || measured < fps)) fps = measured;
+    if (fps > 0) slowest = slowest > 0 ? std::min(slowest, fps) : fps;
+  }
+  if (slowest <= 0) slowest = 30;
+  slowest = std::max(slowest, 5.0);  // a camera slower than 5 pictures a second sets no window wider than 200 ms
+  sync_.tolerance_us = config_.sync_tolerance_us > 0 ? config_.sync_tolerance_us : static_cast<int64_t>(0.5e6 / slowest);
+  // A period and a half: a camera that delivers once a period, with jitter (a capture node's detection time
+  // varies), is still awaited; one silent that long is not.
+  sync_.max_wait_us = config_.max_wait_us > 0 ? config_.max_wait_us : static_cast<int64_t>(1.5e6 / slowest);
 }
 
 void LiveEngine::stop() {
@@ -146,6 +174,7 @@ void LiveEngine::run() {
       if (all_done) break;  // files played out
       continue;
     }
+    update_sync_window();
     const FrameSetDecision d = decide_frame_set(candidates, monotonic_us(), sync_);
     if (!d.emit && !all_done) continue;  // a camera that delivers is about to: wait for it
     for (size_t c = 0; c < n; ++c) {
@@ -169,15 +198,20 @@ void LiveEngine::solve_set(const std::vector<CapturedFrame>& frames, const std::
   const int64_t t0 = monotonic_us();
   int64_t oldest_grab = t0;
   std::vector<ImageView> views(frames.size());
+  std::vector<GivenView> given(frames.size());
   for (size_t c = 0; c < frames.size(); ++c) {
     if (!present[c]) continue;  // an absent view: solved without
+    oldest_grab = std::min(oldest_grab, frames[c].grab_us);
+    if (frames[c].has_keypoints) {
+      given[c] = {&frames[c].people, frames[c].width, frames[c].height};  // a capture node detected them
+      continue;
+    }
     const cv::Mat& m = frames[c].image;
     views[c] = {m.data, m.cols, m.rows, static_cast<int>(m.step[0]), PixelFormat::bgr8};
-    oldest_grab = std::min(oldest_grab, frames[c].grab_us);
   }
   bool solved = false;
   try {
-    solved = session_->solve_images(views, set_time_us);
+    solved = session_->solve_images(views, set_time_us, given);
   } catch (const Error& e) {
     log(LogLevel::warning, std::string("live: a frame set could not be solved: ") + e.what());
     const std::lock_guard<std::mutex> lock(mutex_);
@@ -186,7 +220,8 @@ void LiveEngine::solve_set(const std::vector<CapturedFrame>& frames, const std::
   }
   const int64_t t1 = monotonic_us();
   auto frame = std::make_shared<const FrameResult>(session_->result());
-  const double detect_ms = session_->detector() ? session_->detector()->timings().total_ms : 0;
+  const bool detected = std::any_of(views.begin(), views.end(), [](const ImageView& v) { return !absent(v); });
+  const double detect_ms = detected && session_->detector() ? session_->detector()->timings().total_ms : 0;
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     if (latest_serial_ > taken_serial_) ++stats_.frames_not_taken;

@@ -1,5 +1,6 @@
-// The live engine: N camera feeds (capture/), frame-set assembly (software sync), and one solving thread running
-// the session (detect -> solve -> rig -> the session's sinks: DDS, VMC). Every hand-over is a mailbox of one: a
+// The live engine: N camera feeds (capture/: pixels; stream/: a capture node's keypoints over DDS), frame-set
+// assembly (software sync), and one solving thread running the session (detect -> solve -> rig -> the session's
+// sinks: DDS, VMC). Every hand-over is a mailbox of one: a
 // feed keeps its newest picture, the engine keeps its newest solved frame; under overload the oldest is dropped
 // and counted, so latency is bounded by design.
 #pragma once
@@ -19,15 +20,18 @@
 
 namespace octocap {
 
-class CameraFeed;
+class Feed;
+class KeypointReceiver;
 struct CapturedFrame;
 
 struct LiveConfig {
   SessionConfig session;
   FeedOptions feeds;
   int64_t sync_tolerance_us = 0;  // 0: half a frame period of the slowest camera
-  int64_t max_wait_us = 0;        // 0: one frame period of the slowest camera
+  int64_t max_wait_us = 0;        // 0: 1.5 frame periods of the slowest camera (measured, when slower than it says)
   std::vector<int64_t> latency_offsets_us;  // per camera (see FrameSetOptions::offsets_us)
+  uint32_t remote_domain_id = 0;            // where remote cameras' keypoints are read (dds://NODE/CAMERA)
+  std::string remote_topic = "octocap";     // ... "<topic>_keypoints2d"
 };
 
 // Means over the frames solved so far, and the latency distribution of the last ones.
@@ -77,11 +81,15 @@ class LiveEngine {
  private:
   void run();
   void solve_set(const std::vector<CapturedFrame>& frames, const std::vector<bool>& present, int64_t set_time_us);
+  // The sync tolerance and wait now: the configured ones, else from the slowest camera's measured rate (a camera
+  // that delivers slower than it says, a host that cannot decode every picture, still makes whole sets).
+  void update_sync_window();
 
   LiveConfig config_;
   Calibration calib_;
   std::unique_ptr<Session> session_;
-  std::vector<std::unique_ptr<CameraFeed>> feeds_;
+  std::shared_ptr<KeypointReceiver> receiver_;  // only with remote cameras
+  std::vector<std::unique_ptr<Feed>> feeds_;
   FrameSetOptions sync_;
   std::thread thread_;
   std::atomic<bool> running_{false}, stop_{false};

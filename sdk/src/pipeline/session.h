@@ -53,6 +53,12 @@ struct SessionConfig {
 
 
 
+// A view whose 2D people were detected elsewhere (a capture node), in a picture of width x height pixels.
+struct GivenView {
+  const std::vector<Person2D>* people = nullptr;  // null: the view has no given people
+  int width = 0, height = 0;
+};
+
 class Session {
  public:
   Session(const SessionConfig& config, Calibration calib);
@@ -63,7 +69,9 @@ class Session {
   bool solve(const std::vector<std::vector<Person2D>>& people, int64_t timestamp_us);
   // Detects people in one image per camera (calibration order), then solve(). Throws as solve() does, and
   // Error(invalid_argument) for bad images or a model whose layout is not the session's. (session_images.cpp)
-  bool solve_images(const std::vector<ImageView>& images, int64_t timestamp_us);
+  // `given` (empty, or one per camera): views whose people are given instead (their image absent); the detector
+  // runs only when some image is there.
+  bool solve_images(const std::vector<ImageView>& images, int64_t timestamp_us, const std::vector<GivenView>& given = {});
   // Loads the detector solve_images() uses now (else the config's, on first use). Throws for a model of another
   // layout than the session's.
   void set_detector(const DetectorConfig& config);

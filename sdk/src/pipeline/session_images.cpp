@@ -32,31 +32,64 @@ void Session::set_detector(const DetectorConfig& config) {
   detections_.clear();
 }
 
-bool Session::solve_images(const std::vector<ImageView>& images, int64_t timestamp_us) {
+bool Session::solve_images(const std::vector<ImageView>& images, int64_t timestamp_us,
+                           const std::vector<GivenView>& given) {
   if (images.size() != calib_.size())
     throw Error(Errc::camera_mismatch, "got " + std::to_string(images.size()) + " images, the calibration has " +
                                            std::to_string(calib_.size()) + " cameras");
-  if (!detector_) set_detector(config_.detector);
+  if (!given.empty() && given.size() != images.size())
+    throw Error(Errc::camera_mismatch, "given keypoints for " + std::to_string(given.size()) + " views, the calibration has " +
+                                           std::to_string(calib_.size()) + " cameras");
+  auto is_given = [&](size_t v) { return !given.empty() && given[v].people != nullptr; };
+  bool any_image = false;
+  for (size_t v = 0; v < images.size(); ++v) {
+    if (is_given(v) && !absent(images[v]))
+      throw Error(Errc::invalid_argument, "view " + std::to_string(v) + " has both an image and given keypoints");
+    if (is_given(v)) {
+      const size_t count = layout_->keypoints.size();
+      for (const Person2D& p : *given[v].people)
+        if (p.size() != count)
+          throw Error(Errc::invalid_argument, "view " + std::to_string(v) + ": given people have " + std::to_string(p.size()) +
+                                                  " keypoints, the session's layout " + std::to_string(count));
+    }
+    any_image = any_image || !absent(images[v]);
+  }
+  if (any_image && !detector_) set_detector(config_.detector);
   // Images at another size than the calibration's (a preview stream, a downscaled render) are fine when the
   // aspect matches: keypoints are scaled to calibration pixels for the solve; detections stay in image pixels.
   std::vector<Eigen::Vector2d> scale(images.size(), Eigen::Vector2d::Ones());
   for (size_t v = 0; v < images.size(); ++v) {
     const Camera& cam = calib_[v];
-    if (absent(images[v]) || cam.width <= 0 || cam.height <= 0 ||
-        (cam.width == images[v].width && cam.height == images[v].height))
+    const int width = is_given(v) ? given[v].width : images[v].width;
+    const int height = is_given(v) ? given[v].height : images[v].height;
+    if ((absent(images[v]) && !is_given(v)) || cam.width <= 0 || cam.height <= 0 || width <= 0 || height <= 0 ||
+        (cam.width == width && cam.height == height))
       continue;
-    scale[v] = {static_cast<double>(cam.width) / images[v].width, static_cast<double>(cam.height) / images[v].height};
+    scale[v] = {static_cast<double>(cam.width) / width, static_cast<double>(cam.height) / height};
     if (std::abs(scale[v].x() / scale[v].y() - 1) > 0.01)
-      throw Error(Errc::invalid_argument, "image " + std::to_string(v) + " is " + std::to_string(images[v].width) + "x" +
-                                              std::to_string(images[v].height) + ", camera " + cam.name + " was calibrated at " +
+      throw Error(Errc::invalid_argument, "image " + std::to_string(v) + " is " + std::to_string(width) + "x" +
+                                              std::to_string(height) + ", camera " + cam.name + " was calibrated at " +
                                               std::to_string(cam.width) + "x" + std::to_string(cam.height) +
                                               " (another aspect ratio: not the same picture)");
   }
-  std::vector<Person2D> hints = reprojected_keypoints();
-  for (size_t v = 0; v < hints.size(); ++v)
-    for (Keypoint2D& k : hints[v]) k.x = (k.x + 0.5) / scale[v].x() - 0.5, k.y = (k.y + 0.5) / scale[v].y() - 0.5;
-  detector_->set_hints(std::move(hints));
-  detections_ = detector_->detect(images);
+  if (any_image) {
+    std::vector<Person2D> hints = reprojected_keypoints();
+    for (size_t v = 0; v < hints.size(); ++v)
+      for (Keypoint2D& k : hints[v]) k.x = (k.x + 0.5) / scale[v].x() - 0.5, k.y = (k.y + 0.5) / scale[v].y() - 0.5;
+    detector_->set_hints(std::move(hints));
+    detections_ = detector_->detect(images);
+  } else {
+    detections_.assign(images.size(), {});
+  }
+  for (size_t v = 0; v < images.size(); ++v) {
+    if (!is_given(v)) continue;
+    detections_[v].clear();
+    for (const Person2D& p : *given[v].people) {
+      DetectedPerson d;
+      d.keypoints = p;
+      detections_[v].push_back(std::move(d));
+    }
+  }
   std::vector<std::vector<Person2D>> people(detections_.size());
   for (size_t v = 0; v < detections_.size(); ++v)
     for (const DetectedPerson& d : detections_[v]) {

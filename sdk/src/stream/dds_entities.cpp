@@ -40,4 +40,12 @@ dds_qos_t* pose_qos(const StreamConfig& config) {
   return q;
 }
 
+dds_qos_t* keypoints_qos() {
+  dds_qos_t* q = dds_create_qos();
+  dds_qset_reliability(q, DDS_RELIABILITY_BEST_EFFORT, 0);
+  dds_qset_durability(q, DDS_DURABILITY_VOLATILE);
+  dds_qset_history(q, DDS_HISTORY_KEEP_LAST, 1);
+  return q;
+}
+
 }  // namespace octocap

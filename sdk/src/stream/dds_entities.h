@@ -26,6 +26,8 @@ dds_entity_t create_topic(dds_entity_t participant, const dds_topic_descriptor_t
 dds_qos_t* definition_qos();
 // The pose profile of `config` (see StreamConfig).
 dds_qos_t* pose_qos(const StreamConfig& config);
+// BEST_EFFORT + VOLATILE + KEEP_LAST 1 (per camera): a capture node's 2D keypoints.
+dds_qos_t* keypoints_qos();
 // Throws Error(io) naming what failed when rc < 0.
 dds_entity_t check_dds(dds_entity_t rc, const char* what);
 

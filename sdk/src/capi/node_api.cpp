@@ -1,0 +1,172 @@
+// Capture nodes: the C shell over pipeline/keypoint_node. Without DDS in the build, creating one says so
+// (OCTOCAP_ERROR_UNSUPPORTED), and no node handle can exist.
+#include "capi/boundary.h"
+#include "capi/detect_c.h"
+#include "capi/frame_queries.h"
+#include "capi/handles.h"
+#include "capi/live_c.h"
+#include "capi/stream_c.h"
+#include "capi/struct_versions.h"
+
+using namespace octocap;
+
+namespace {
+
+#ifdef OCTOCAP_HAVE_DDS
+KeypointNode& node_of(octocap_node_t* n) { return *capi::checked(n, "node")->node; }
+const KeypointNode& node_of(const octocap_node_t* n) { return *capi::checked(n, "node")->node; }
+#endif
+
+[[maybe_unused]] [[noreturn]] void no_dds() {
+  throw Error(Errc::unsupported, "this build of octocap has no DDS (OCTOCAP_WITH_DDS=OFF): no capture nodes");
+}
+
+}  // namespace
+
+extern "C" {
+
+octocap_result_t octocap_node_config_defaults(octocap_node_config_t* c, uint32_t struct_size) {
+  return capi::guard([&] {
+    capi::require(c, "cfg");
+    capi::check_size(struct_size, capi::kNodeConfigSizes, "octocap_node_config_t");
+    octocap_node_config_t d{};
+    capi::copy_name(d.name, sizeof d.name, "node1");
+    capi::copy_name(d.topic, sizeof d.topic, "octocap");
+    d.open_timeout_ms = 5000;
+    d.read_timeout_ms = 3000;
+    d.reconnect_max_ms = 2000;
+    d.picture_rate_hz = 30;
+    capi::write_defaults(c, struct_size, d);
+  });
+}
+
+octocap_result_t octocap_node_create(const octocap_node_config_t* given, const char* const* cameras,
+                                     const char* const* names, uint32_t camera_count, octocap_node_t** out) {
+  return capi::guard([&] {
+    capi::require(out, "out");
+    *out = nullptr;
+    capi::require(given, "cfg");
+    capi::check_size(given->struct_size, capi::kNodeConfigSizes, "octocap_node_config_t");
+    if (camera_count == 0) throw Error(Errc::invalid_argument, "a capture node needs at least one camera");
+    capi::require(cameras, "cameras");
+    octocap_node_config_t defaults;
+    octocap_node_config_init(&defaults);
+    const octocap_node_config_t c = capi::widen(*given, defaults);
+    capi::require_finite(c.picture_rate_hz, "cfg.picture_rate_hz");
+    capi::require_finite(c.detect_rate_hz, "cfg.detect_rate_hz");
+    if (!(c.detect_rate_hz >= 0.0f && c.detect_rate_hz <= 1000.0f))
+      throw Error(Errc::invalid_argument, "cfg.detect_rate_hz must be 0 (automatic) to 1000");
+    if (!(c.picture_rate_hz >= 0.01f && c.picture_rate_hz <= 1000.0f))
+      throw Error(Errc::invalid_argument, "cfg.picture_rate_hz must be 0.01 to 1000");
+    if (c.open_timeout_ms < 1 || c.open_timeout_ms > 600000 || c.read_timeout_ms < 1 || c.read_timeout_ms > 600000)
+      throw Error(Errc::invalid_argument, "cfg.open_timeout_ms and read_timeout_ms must be 1 ms to 10 minutes");
+    if (c.reconnect_max_ms < 100 || c.reconnect_max_ms > 600000)
+      throw Error(Errc::invalid_argument, "cfg.reconnect_max_ms must be 100 ms to 10 minutes");
+    const size_t name_len = strnlen(c.name, sizeof c.name);
+    if (name_len == 0 || name_len == sizeof c.name)
+      throw Error(Errc::invalid_argument, "cfg.name must be a NUL-terminated, non-empty name");
+    std::vector<std::string> specs, camera_names;
+    for (uint32_t i = 0; i < camera_count; ++i) {
+      if (!cameras[i]) throw Error(Errc::invalid_argument, "camera " + std::to_string(i) + " is NULL");
+      specs.emplace_back(cameras[i]);
+      if (!names) continue;
+      if (!names[i]) throw Error(Errc::invalid_argument, "name " + std::to_string(i) + " is NULL");
+      camera_names.emplace_back(names[i]);
+    }
+#ifdef OCTOCAP_HAVE_DDS
+    NodeConfig config;
+    config.name.assign(c.name, name_len);
+    config.domain_id = capi::domain_id(c.domain_id);
+    config.topic = capi::topic_name(c.topic, sizeof c.topic, "cfg.topic");
+    config.feeds.source.open_timeout_ms = static_cast<int>(c.open_timeout_ms);
+    config.feeds.source.read_timeout_ms = static_cast<int>(c.read_timeout_ms);
+    config.feeds.source.picture_rate_hz = c.picture_rate_hz;
+    config.feeds.reconnect_max_ms = static_cast<int>(c.reconnect_max_ms);
+    config.detect_rate_hz = c.detect_rate_hz;
+    auto node = std::make_unique<KeypointNode>(config, specs, camera_names);
+    *out = capi::make_handle<octocap_node_t>(std::move(node));
+#else
+    no_dds();
+#endif
+  });
+}
+
+octocap_result_t octocap_node_set_detector(octocap_node_t* n, const octocap_detector_config_t* cfg) {
+  return capi::guard([&] {
+#ifdef OCTOCAP_HAVE_DDS
+    KeypointNode& node = node_of(n);
+    capi::require(cfg, "cfg");
+    node.set_detector(capi::detector_config(*cfg));
+#else
+    capi::checked(n, "node");
+    (void)cfg;
+    no_dds();
+#endif
+  });
+}
+
+octocap_result_t octocap_node_start(octocap_node_t* n) {
+  return capi::guard([&] {
+#ifdef OCTOCAP_HAVE_DDS
+    node_of(n).start();
+#else
+    capi::checked(n, "node");
+    no_dds();
+#endif
+  });
+}
+
+octocap_result_t octocap_node_stop(octocap_node_t* n) {
+  return capi::guard([&] {
+#ifdef OCTOCAP_HAVE_DDS
+    node_of(n).stop();
+#else
+    capi::checked(n, "node");
+    no_dds();
+#endif
+  });
+}
+
+void octocap_node_destroy(octocap_node_t* n) { capi::destroy_handle(n); }
+
+octocap_result_t octocap_node_get_stats(const octocap_node_t* n, octocap_node_stats_t* out) {
+  return capi::guard([&] {
+#ifdef OCTOCAP_HAVE_DDS
+    const KeypointNode& node = node_of(n);
+    capi::fill_sized(out, sizeof(octocap_node_stats_t), "octocap_node_stats_t", [&](octocap_node_stats_t& o) {
+      const NodeStats s = node.stats();
+      o.running = s.running ? 1 : 0;
+      o.finished = s.finished ? 1 : 0;
+      o.camera_count = static_cast<uint32_t>(node.camera_count());
+      o.published = s.published;
+      o.with_person = s.with_person;
+      o.detect_ms = static_cast<float>(s.detect_ms);
+      o.processing_ms = static_cast<float>(s.processing_ms);
+      o.readers = s.readers;
+    });
+#else
+    capi::checked(n, "node");
+    (void)out;
+    no_dds();
+#endif
+  });
+}
+
+octocap_result_t octocap_node_get_camera_status(const octocap_node_t* n, uint32_t index, octocap_camera_status_t* out) {
+  return capi::guard([&] {
+#ifdef OCTOCAP_HAVE_DDS
+    const KeypointNode& node = node_of(n);
+    if (index >= node.camera_count())
+      throw Error(Errc::invalid_argument, "camera " + std::to_string(index) + " out of range (" +
+                                              std::to_string(node.camera_count()) + " cameras)");
+    capi::fill_camera_status(node.camera_status(index), node.camera_name(index), out);
+#else
+    capi::checked(n, "node");
+    (void)index;
+    (void)out;
+    no_dds();
+#endif
+  });
+}
+
+}  // extern "C"

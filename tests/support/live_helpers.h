@@ -1,0 +1,58 @@
+// What the live-capture tests share: the real take's files, the session and detector they run, waiting on a
+// condition without asserting wall-clock speed.
+#pragma once
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "octocap/octocap.h"
+
+namespace testing {
+
+inline const std::string kVideos =
+    std::string(OCTOCAP_SOURCE_DIR) + "/.cache/pose2sim-0.10.49/Demo_SinglePerson/videos/";
+// The same views as H.264 camera streams (scripts/fetch-real-videos.sh), for the RTSP server.
+inline const std::string kStreams = std::string(OCTOCAP_SOURCE_DIR) + "/.cache/rtsp-streams/";
+inline const std::string kDemo = std::string(OCTOCAP_REAL_DATA_DIR) + "/Demo";
+
+inline std::vector<std::string> demo_videos() {
+  std::vector<std::string> v;
+  for (int c = 1; c <= 4; ++c) v.push_back(kVideos + "cam0" + std::to_string(c) + ".mp4");
+  return v;
+}
+
+inline octocap_session_config_t coco_session() {
+  octocap_session_config_t cfg;
+  octocap_session_config_init(&cfg);
+  cfg.layout = OCTOCAP_LAYOUT_COCO_17;  // the shipped models' layout
+  cfg.filter = OCTOCAP_FILTER_NONE;
+  return cfg;
+}
+
+inline octocap_detector_config_t lightning() {
+  octocap_detector_config_t det;
+  octocap_detector_config_init(&det);
+  std::snprintf(det.model, sizeof det.model, "%s", "movenet-lightning");  // the faster model: more sets per second
+  return det;
+}
+
+inline double median_of(std::vector<double> v) {
+  if (v.empty()) return 1e9;
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+template <class Pred>
+bool wait_until(Pred&& done, int timeout_ms) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeout_ms);
+  while (std::chrono::steady_clock::now() < end) {
+    if (done()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return done();
+}
+
+}  // namespace testing
