@@ -1,6 +1,8 @@
 // Live capture benchmark (not a test): the engine end to end on real footage delivered as cameras deliver it.
 //   files:   Pose2Sim's 4 real videos (1088x1920, 60 fps) played as cameras at their own rate;
-//   network: the same views as MJPEG over HTTP on loopback (ffmpeg servers, 272x480, 60 fps), 2 and 4 cameras.
+//   network: the same views as MJPEG over HTTP on loopback (ffmpeg servers, 272x480, 60 fps), 2 and 4 cameras;
+//   rtsp:    the same views as H.264 IP cameras (GStreamer's RTSP server on loopback, tests/support/rtsp_server.py),
+//            544x960 sub-streams for 1, 2, 4 and 8 cameras (8: the four views twice), and the 1088x1920 main streams.
 // Per row: solved frame sets per second, sets without every camera, per-stage means (image collection = waiting for
 // the set, 2D detection, 3D + rig), grab-to-frame latency p50 / p99, pictures dropped (bounded mailboxes at work).
 #include <unistd.h>
@@ -97,5 +99,30 @@ int main() {
   row("4 MJPEG/HTTP cameras, 272x480 @ 60", lab, urls, "movenet-lightning", 10);
   servers.clear();
   for (const std::string& avi : avis) std::remove(avi.c_str());
+
+  // IP cameras over RTSP: one server, a mount per view (shared: two clients of a mount see one camera).
+  const std::string streams = kRoot + "/.cache/rtsp-streams/";
+  auto rtsp_row = [&](const char* what, int count, const std::string& suffix) {
+    std::vector<std::string> args = {"/usr/bin/python3", kRoot + "/tests/support/rtsp_server.py", "--port", "30600"};
+    for (int c = 1; c <= 4; ++c)
+      args.push_back("/cam" + std::to_string(c) + "=" + streams + "cam0" + std::to_string(c) + suffix + ".h264");
+    testing::ChildProcess server(args);
+    std::this_thread::sleep_for(std::chrono::milliseconds(800));
+    std::vector<octocap_camera_t> cams;
+    std::vector<std::string> rtsp;
+    for (int c = 0; c < count; ++c) {
+      cams.push_back(lab.camera(static_cast<uint32_t>(c % 4)));
+      std::snprintf(cams.back().name, sizeof cams.back().name, "cam_%02d", c + 1);
+      rtsp.push_back("rtsp://127.0.0.1:30600/cam" + std::to_string(c % 4 + 1));
+    }
+    octocap_calibration_t* sub = nullptr;
+    octocap::check(octocap_calibration_create(cams.data(), static_cast<uint32_t>(cams.size()), &sub), "cameras");
+    row(what, octocap::Calibration(sub), rtsp, "movenet-lightning", 10);
+  };
+  rtsp_row("1 RTSP camera, 544x960 @ 60", 1, "_960");
+  rtsp_row("2 RTSP cameras, 544x960 @ 60", 2, "_960");
+  rtsp_row("4 RTSP cameras, 544x960 @ 60", 4, "_960");
+  rtsp_row("8 RTSP cameras, 544x960 @ 60", 8, "_960");
+  rtsp_row("4 RTSP cameras, 1088x1920 @ 60", 4, "");
   return 0;
 }

@@ -325,6 +325,9 @@ namespace Octocap
         public uint ReadTimeoutMs;
         public uint ReconnectMaxMs;
         public float PictureRateHz;
+        // 1.1: where remote cameras (dds://NODE/CAMERA, capture nodes' keypoints) are read.
+        public uint RemoteDomainId;
+        public Name32 RemoteTopic;
 
         public static LiveConfig Default
         {
@@ -373,6 +376,8 @@ namespace Octocap
         public float Fps;
         public float NominalFps;
         public Name32 Name;
+        /// <summary>1.1. Remote cameras: transit plus how far the node's clock lags this host's (ms).</summary>
+        public float ClockOffsetMs;
     }
 
     [UnmanagedFunctionPointer(CallingConvention.Cdecl)]

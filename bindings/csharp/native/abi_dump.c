@@ -88,7 +88,8 @@ static void layout(void) {
   FIELD(octocap_live_config_t, struct_size); FIELD(octocap_live_config_t, sync_tolerance_us);
   FIELD(octocap_live_config_t, max_wait_us); FIELD(octocap_live_config_t, open_timeout_ms);
   FIELD(octocap_live_config_t, read_timeout_ms); FIELD(octocap_live_config_t, reconnect_max_ms);
-  FIELD(octocap_live_config_t, picture_rate_hz);
+  FIELD(octocap_live_config_t, picture_rate_hz); FIELD(octocap_live_config_t, remote_domain_id);
+  FIELD(octocap_live_config_t, remote_topic);
   SIZE(octocap_live_stats_t);
   FIELD(octocap_live_stats_t, struct_size); FIELD(octocap_live_stats_t, running); FIELD(octocap_live_stats_t, finished);
   FIELD(octocap_live_stats_t, camera_count); FIELD(octocap_live_stats_t, frame_sets);
@@ -101,6 +102,7 @@ static void layout(void) {
   FIELD(octocap_camera_status_t, grabbed); FIELD(octocap_camera_status_t, used); FIELD(octocap_camera_status_t, dropped);
   FIELD(octocap_camera_status_t, reconnects); FIELD(octocap_camera_status_t, fps);
   FIELD(octocap_camera_status_t, nominal_fps); FIELD(octocap_camera_status_t, name);
+  FIELD(octocap_camera_status_t, clock_offset_ms);
 }
 
 static int fail(const char* what) {
