@@ -1,8 +1,9 @@
-// Thin Unity adapter: N webcams (WebCamTexture, in the calibration's camera order) in, a solved frame out, every
-// Update. Pairs with OctocapAvatarDriver (give it this rig's Session). Pixels go to the native detector pinned, as
-// RGBA8, with Unity's bottom-up rows copied into the top-down order the detector expects.
+// Thin Unity adapter: N webcams (WebCamTexture, in the calibration's camera order) in, solved frames out. Update only
+// copies the pictures (WebCamTexture can be read on the main thread alone) into a BackgroundSolver's image set, as
+// RGBA8 with Unity's bottom-up rows turned top-down, and submits it without waiting: detection and the solve run on
+// the solver's thread, so the game keeps its frame rate whatever the detector costs. Pairs with OctocapAvatarDriver
+// (its Source is this rig's Solver).
 using System;
-using System.Runtime.InteropServices;
 using Octocap;
 using UnityEngine;
 
@@ -20,11 +21,11 @@ public sealed class OctocapCameraRig : MonoBehaviour
     public OctocapAvatarDriver avatar;
 
     public Session Session { get; private set; }
+    public BackgroundSolver Solver { get; private set; }
 
     Calibration _calibration;
     WebCamTexture[] _cams;
     Color32[][] _pixels;
-    byte[][] _topDown;
 
     void Start()
     {
@@ -41,10 +42,10 @@ public sealed class OctocapCameraRig : MonoBehaviour
         detector.Mode = mode;
         detector.Threads = (uint)Math.Max(0, detectorThreads);
         Session.SetDetector(detector);
-        if (avatar != null) avatar.Source = Session;
+        Solver = new BackgroundSolver(Session, deviceNames.Length);
+        if (avatar != null) avatar.Source = Solver;
         _cams = new WebCamTexture[deviceNames.Length];
         _pixels = new Color32[deviceNames.Length][];
-        _topDown = new byte[deviceNames.Length][];
         for (int i = 0; i < _cams.Length; ++i)
         {
             _cams[i] = new WebCamTexture(deviceNames[i]);
@@ -54,39 +55,25 @@ public sealed class OctocapCameraRig : MonoBehaviour
 
     unsafe void Update()
     {
-        if (Session == null) return;
+        if (Solver == null) return;
         foreach (var cam in _cams)
-            if (!cam.didUpdateThisFrame) return;  // solve when every view has a new picture
-        var images = new Image[_cams.Length];
-        var pins = new GCHandle[_cams.Length];
-        try
+            if (!cam.didUpdateThisFrame) return;  // a set when every view has a new picture
+        BackgroundSolver.ImageSet set = Solver.Rent();
+        for (int i = 0; i < _cams.Length; ++i)
         {
-            for (int i = 0; i < _cams.Length; ++i)
-            {
-                int w = _cams[i].width, h = _cams[i].height;
-                if (_pixels[i] == null || _pixels[i].Length != w * h)
-                {
-                    _pixels[i] = new Color32[w * h];
-                    _topDown[i] = new byte[w * h * 4];
-                }
-                _cams[i].GetPixels32(_pixels[i]);
-                // Unity's rows start at the bottom; the detector's at the top.
-                fixed (Color32* src = _pixels[i])
-                fixed (byte* dst = _topDown[i])
-                    for (int y = 0; y < h; ++y)
-                        Buffer.MemoryCopy(src + (h - 1 - y) * w, dst + y * w * 4, w * 4, w * 4);
-                pins[i] = GCHandle.Alloc(_topDown[i], GCHandleType.Pinned);
-                images[i] = new Image { Pixels = pins[i].AddrOfPinnedObject(), Width = (uint)w, Height = (uint)h,
-                                        StrideBytes = (uint)(w * 4), Format = PixelFormat.Rgba8 };
-            }
-            // Ok or NoPerson (nobody in view: a normal outcome); errors throw.
-            Session.SolveImages(images, (long)(Time.timeAsDouble * 1e6));
+            int w = _cams[i].width, h = _cams[i].height;
+            if (_pixels[i] == null || _pixels[i].Length != w * h) _pixels[i] = new Color32[w * h];
+            _cams[i].GetPixels32(_pixels[i]);
+            // Unity's rows start at the bottom; the detector's at the top.
+            fixed (Color32* src = _pixels[i])
+            fixed (byte* dst = set.Resize(i, w, h))
+                for (int y = 0; y < h; ++y)
+                    Buffer.MemoryCopy(src + (h - 1 - y) * w, dst + y * w * 4, w * 4, w * 4);
         }
-        finally
-        {
-            foreach (var pin in pins)
-                if (pin.IsAllocated) pin.Free();
-        }
+        set.Format = PixelFormat.Rgba8;
+        set.TimestampUs = (long)(Time.timeAsDouble * 1e6);
+        Solver.Submit(set);  // never waits: a set the solver had no time for is replaced by this one
+        if (Solver.LastError != null) Debug.LogWarning("octocap: " + Solver.LastError);
     }
 
     void OnDestroy()
@@ -94,6 +81,7 @@ public sealed class OctocapCameraRig : MonoBehaviour
         if (_cams != null)
             foreach (var cam in _cams)
                 if (cam != null) cam.Stop();
+        Solver?.Dispose();  // joins the worker before the session goes
         Session?.Dispose();
         _calibration?.Dispose();
     }
