@@ -99,22 +99,14 @@ TEST_CASE("capture nodes: two node processes publish keypoints, a hub solves the
   node_b->kill_now();
   node_b->wait();
   REQUIRE(wait_until([&] { return hub.camera(2).state == OCTOCAP_CAMERA_RECONNECTING; }, 10000));
-  size_t two_views = 0;
-  for (int i = 0; i < 100 && two_views < 5; ++i)
-    if (std::optional<octocap::Frame> f = hub.take(2000); f && f->person_count() == 1)
-      two_views += f->person(0).views_with_person == 2;
-  CHECK(two_views >= 5);
+  CHECK(frames_seen_by(hub, 2, 5, 100) == 5);
   CHECK(hub.camera(0).state == OCTOCAP_CAMERA_STREAMING);
 
   // It comes back: reconnected, counted, four views again.
   node_b = node("nodeB", 2);
   REQUIRE(wait_until([&] { return hub.camera(3).state == OCTOCAP_CAMERA_STREAMING; }, 30000));
   CHECK(hub.camera(2).reconnects + hub.camera(3).reconnects >= 1);
-  size_t four_views = 0;
-  for (int i = 0; i < 100 && four_views < 5; ++i)
-    if (std::optional<octocap::Frame> f = hub.take(2000); f && f->person_count() == 1)
-      four_views += f->person(0).views_with_person == 4;
-  CHECK(four_views >= 5);
+  CHECK(frames_seen_by(hub, 4, 5, 100) == 5);
   CHECK(hub.camera(0).reconnects == 0);
   hub.stop();
 

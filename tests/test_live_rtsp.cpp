@@ -133,11 +133,7 @@ TEST_CASE("live: four RTSP cameras on loopback solve as offline; one killed and 
   servers[1]->kill_now();
   servers[1]->wait();
   REQUIRE(wait_until([&] { return live.camera(1).state == OCTOCAP_CAMERA_RECONNECTING; }, 10000));
-  size_t three_views = 0;
-  for (int i = 0; i < 200 && three_views < 10; ++i)
-    if (std::optional<octocap::Frame> f = live.take(2000); f && f->person_count() == 1)
-      three_views += f->person(0).views_with_person == 3;
-  CHECK(three_views >= 10);
+  CHECK(frames_seen_by(live, 3, 10, 200) == 10);
   CHECK(live.camera(0).state == OCTOCAP_CAMERA_STREAMING);
   CHECK(live.camera(2).state == OCTOCAP_CAMERA_STREAMING);
 
@@ -145,11 +141,7 @@ TEST_CASE("live: four RTSP cameras on loopback solve as offline; one killed and 
   servers[1] = serve(1);
   REQUIRE(wait_until([&] { return live.camera(1).state == OCTOCAP_CAMERA_STREAMING; }, 20000));
   CHECK(live.camera(1).reconnects >= 1);
-  size_t four_views = 0;
-  for (int i = 0; i < 300 && four_views < 10; ++i)
-    if (std::optional<octocap::Frame> f = live.take(2000); f && f->person_count() == 1)
-      four_views += f->person(0).views_with_person == 4;
-  CHECK(four_views >= 10);
+  CHECK(frames_seen_by(live, 4, 10, 300) == 10);
   const octocap_live_stats_t stats = live.stats();
   CHECK(stats.sets_incomplete >= 10);
   CHECK(stats.latency_p99_ms >= stats.latency_p50_ms);

@@ -55,4 +55,14 @@ bool wait_until(Pred&& done, int timeout_ms) {
   return done();
 }
 
+// Takes up to `attempts` frames (2 s each) until `wanted` of them show the person in exactly `views` views; returns
+// how many did.
+template <class Live>
+size_t frames_seen_by(Live& live, uint32_t views, size_t wanted, int attempts) {
+  size_t seen = 0;
+  for (int i = 0; i < attempts && seen < wanted; ++i)
+    if (auto f = live.take(2000); f && f->person_count() == 1) seen += f->person(0).views_with_person == views;
+  return seen;
+}
+
 }  // namespace testing

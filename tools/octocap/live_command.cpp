@@ -73,12 +73,7 @@ int live(const LiveOptions& o) {
       last_status = std::chrono::steady_clock::now();
       std::fprintf(stderr, "\r%6.1f s  solved %5.1f fps  latency p50 %5.0f ms p99 %5.0f ms  cameras", elapsed, s.fps,
                    s.latency_p50_ms, s.latency_p99_ms);
-      for (uint32_t c = 0; c < s.camera_count; ++c) {
-        const octocap_camera_status_t cam = capture.camera(c);
-        std::fprintf(stderr, " %s %.0f fps%s", cam.name, cam.fps,
-                     cam.state == OCTOCAP_CAMERA_RECONNECTING ? " (reconnecting)" : "");
-      }
-      std::fprintf(stderr, "   ");
+      live_common::print_camera_rates(capture, s.camera_count);
     }
   }
   capture.stop();

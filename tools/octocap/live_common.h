@@ -32,4 +32,15 @@ inline const char* state_name(octocap_camera_state_t s) {
   return s >= 0 && s <= 5 ? names[s] : "?";
 }
 
+// The status line's end: each camera's name and rate, and whether it is reconnecting (octocap::Live or ::Node).
+template <class Capture>
+void print_camera_rates(const Capture& capture, uint32_t cameras) {
+  for (uint32_t c = 0; c < cameras; ++c) {
+    const octocap_camera_status_t cam = capture.camera(c);
+    std::fprintf(stderr, " %s %.0f fps%s", cam.name, cam.fps,
+                 cam.state == OCTOCAP_CAMERA_RECONNECTING ? " (reconnecting)" : "");
+  }
+  std::fprintf(stderr, "   ");
+}
+
 }  // namespace live_common

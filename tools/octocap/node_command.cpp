@@ -41,12 +41,7 @@ int node(const DetectOptions& o) {
       last_status = std::chrono::steady_clock::now();
       std::fprintf(stderr, "\r%6.1f s  published %6llu views  detect %5.1f ms  hubs %u  cameras", elapsed,
                    static_cast<unsigned long long>(s.published), s.detect_ms, s.readers);
-      for (uint32_t c = 0; c < s.camera_count; ++c) {
-        const octocap_camera_status_t cam = capture.camera(c);
-        std::fprintf(stderr, " %s %.0f fps%s", cam.name, cam.fps,
-                     cam.state == OCTOCAP_CAMERA_RECONNECTING ? " (reconnecting)" : "");
-      }
-      std::fprintf(stderr, "   ");
+      live_common::print_camera_rates(capture, s.camera_count);
     }
   }
   capture.stop();

@@ -38,6 +38,38 @@ void fill_camera_status(const FeedStatus& s, const std::string& name, octocap_ca
   });
 }
 
+FeedOptions feed_options(uint32_t open_timeout_ms, uint32_t read_timeout_ms, uint32_t reconnect_max_ms,
+                         float picture_rate_hz) {
+  require_finite(picture_rate_hz, "cfg.picture_rate_hz");
+  if (!(picture_rate_hz >= 0.01f && picture_rate_hz <= 1000.0f))
+    throw Error(Errc::invalid_argument, "cfg.picture_rate_hz must be 0.01 to 1000");
+  if (open_timeout_ms < 1 || open_timeout_ms > 600000 || read_timeout_ms < 1 || read_timeout_ms > 600000)
+    throw Error(Errc::invalid_argument, "cfg.open_timeout_ms and read_timeout_ms must be 1 ms to 10 minutes");
+  if (reconnect_max_ms < 100 || reconnect_max_ms > 600000)
+    throw Error(Errc::invalid_argument, "cfg.reconnect_max_ms must be 100 ms to 10 minutes");
+  FeedOptions o;
+  o.source.open_timeout_ms = static_cast<int>(open_timeout_ms);
+  o.source.read_timeout_ms = static_cast<int>(read_timeout_ms);
+  o.source.picture_rate_hz = picture_rate_hz;
+  o.reconnect_max_ms = static_cast<int>(reconnect_max_ms);
+  return o;
+}
+
+std::vector<std::string> strings(const char* const* values, uint32_t count, const char* what) {
+  std::vector<std::string> out;
+  for (uint32_t i = 0; i < count; ++i) {
+    if (!values[i]) throw Error(Errc::invalid_argument, std::string(what) + " " + std::to_string(i) + " is NULL");
+    out.emplace_back(values[i]);
+  }
+  return out;
+}
+
+void check_camera_index(uint32_t index, size_t count) {
+  if (index >= count)
+    throw Error(Errc::invalid_argument,
+                "camera " + std::to_string(index) + " out of range (" + std::to_string(count) + " cameras)");
+}
+
 }  // namespace octocap::capi
 
 extern "C" {
@@ -47,10 +79,7 @@ octocap_result_t octocap_live_config_defaults(octocap_live_config_t* c, uint32_t
     capi::require(c, "cfg");
     capi::check_size(struct_size, capi::kLiveConfigSizes, "octocap_live_config_t");
     octocap_live_config_t d{};
-    d.open_timeout_ms = 5000;
-    d.read_timeout_ms = 3000;
-    d.reconnect_max_ms = 2000;
-    d.picture_rate_hz = 30;
+    capi::set_feed_defaults(d);
     capi::copy_name(d.remote_topic, sizeof d.remote_topic, "octocap");
     capi::write_defaults(c, struct_size, d);
   });
@@ -69,29 +98,14 @@ octocap_result_t octocap_live_create(const octocap_live_config_t* given, const o
     octocap_live_config_t defaults;
     octocap_live_config_init(&defaults);
     const octocap_live_config_t c = capi::widen(*given, defaults);
-    capi::require_finite(c.picture_rate_hz, "cfg.picture_rate_hz");
-    if (!(c.picture_rate_hz >= 0.01f && c.picture_rate_hz <= 1000.0f))
-      throw Error(Errc::invalid_argument, "cfg.picture_rate_hz must be 0.01 to 1000");
-    if (c.open_timeout_ms < 1 || c.open_timeout_ms > 600000 || c.read_timeout_ms < 1 || c.read_timeout_ms > 600000)
-      throw Error(Errc::invalid_argument, "cfg.open_timeout_ms and read_timeout_ms must be 1 ms to 10 minutes");
-    if (c.reconnect_max_ms < 100 || c.reconnect_max_ms > 600000)
-      throw Error(Errc::invalid_argument, "cfg.reconnect_max_ms must be 100 ms to 10 minutes");
     LiveConfig config;
+    config.feeds = capi::feed_options(c.open_timeout_ms, c.read_timeout_ms, c.reconnect_max_ms, c.picture_rate_hz);
     config.session = capi::session_config(session_cfg);
-    config.feeds.source.open_timeout_ms = static_cast<int>(c.open_timeout_ms);
-    config.feeds.source.read_timeout_ms = static_cast<int>(c.read_timeout_ms);
-    config.feeds.source.picture_rate_hz = c.picture_rate_hz;
-    config.feeds.reconnect_max_ms = static_cast<int>(c.reconnect_max_ms);
     config.sync_tolerance_us = c.sync_tolerance_us;
     config.max_wait_us = c.max_wait_us;
     config.remote_domain_id = capi::domain_id(c.remote_domain_id);
     config.remote_topic = capi::topic_name(c.remote_topic, sizeof c.remote_topic, "cfg.remote_topic");
-    std::vector<std::string> specs;
-    for (uint32_t i = 0; i < camera_count; ++i) {
-      if (!cameras[i]) throw Error(Errc::invalid_argument, "camera " + std::to_string(i) + " is NULL");
-      specs.emplace_back(cameras[i]);
-    }
-    auto engine = std::make_unique<LiveEngine>(config, calib->cameras, specs);
+    auto engine = std::make_unique<LiveEngine>(config, calib->cameras, capi::strings(cameras, camera_count, "camera"));
     *out = capi::make_handle<octocap_live_t>(std::move(engine));
   });
 }
@@ -172,9 +186,7 @@ octocap_result_t octocap_live_get_stats(const octocap_live_t* l, octocap_live_st
 octocap_result_t octocap_live_get_camera_status(const octocap_live_t* l, uint32_t index, octocap_camera_status_t* out) {
   return capi::guard([&] {
     const LiveEngine& e = engine_of(l);
-    if (index >= e.camera_count())
-      throw Error(Errc::invalid_argument, "camera " + std::to_string(index) + " out of range (" +
-                                              std::to_string(e.camera_count()) + " cameras)");
+    capi::check_camera_index(index, e.camera_count());
     capi::fill_camera_status(e.camera_status(index), e.camera_name(index), out);
   });
 }

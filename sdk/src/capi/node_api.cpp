@@ -32,10 +32,7 @@ octocap_result_t octocap_node_config_defaults(octocap_node_config_t* c, uint32_t
     octocap_node_config_t d{};
     capi::copy_name(d.name, sizeof d.name, "node1");
     capi::copy_name(d.topic, sizeof d.topic, "octocap");
-    d.open_timeout_ms = 5000;
-    d.read_timeout_ms = 3000;
-    d.reconnect_max_ms = 2000;
-    d.picture_rate_hz = 30;
+    capi::set_feed_defaults(d);
     capi::write_defaults(c, struct_size, d);
   });
 }
@@ -52,40 +49,30 @@ octocap_result_t octocap_node_create(const octocap_node_config_t* given, const c
     octocap_node_config_t defaults;
     octocap_node_config_init(&defaults);
     const octocap_node_config_t c = capi::widen(*given, defaults);
-    capi::require_finite(c.picture_rate_hz, "cfg.picture_rate_hz");
+    const FeedOptions feeds =
+        capi::feed_options(c.open_timeout_ms, c.read_timeout_ms, c.reconnect_max_ms, c.picture_rate_hz);
     capi::require_finite(c.detect_rate_hz, "cfg.detect_rate_hz");
     if (!(c.detect_rate_hz >= 0.0f && c.detect_rate_hz <= 1000.0f))
       throw Error(Errc::invalid_argument, "cfg.detect_rate_hz must be 0 (automatic) to 1000");
-    if (!(c.picture_rate_hz >= 0.01f && c.picture_rate_hz <= 1000.0f))
-      throw Error(Errc::invalid_argument, "cfg.picture_rate_hz must be 0.01 to 1000");
-    if (c.open_timeout_ms < 1 || c.open_timeout_ms > 600000 || c.read_timeout_ms < 1 || c.read_timeout_ms > 600000)
-      throw Error(Errc::invalid_argument, "cfg.open_timeout_ms and read_timeout_ms must be 1 ms to 10 minutes");
-    if (c.reconnect_max_ms < 100 || c.reconnect_max_ms > 600000)
-      throw Error(Errc::invalid_argument, "cfg.reconnect_max_ms must be 100 ms to 10 minutes");
     const size_t name_len = strnlen(c.name, sizeof c.name);
     if (name_len == 0 || name_len == sizeof c.name)
       throw Error(Errc::invalid_argument, "cfg.name must be a NUL-terminated, non-empty name");
-    std::vector<std::string> specs, camera_names;
-    for (uint32_t i = 0; i < camera_count; ++i) {
-      if (!cameras[i]) throw Error(Errc::invalid_argument, "camera " + std::to_string(i) + " is NULL");
-      specs.emplace_back(cameras[i]);
-      if (!names) continue;
-      if (!names[i]) throw Error(Errc::invalid_argument, "name " + std::to_string(i) + " is NULL");
-      camera_names.emplace_back(names[i]);
-    }
+    const std::vector<std::string> specs = capi::strings(cameras, camera_count, "camera");
+    const std::vector<std::string> camera_names =
+        names ? capi::strings(names, camera_count, "name") : std::vector<std::string>{};
 #ifdef OCTOCAP_HAVE_DDS
     NodeConfig config;
     config.name.assign(c.name, name_len);
     config.domain_id = capi::domain_id(c.domain_id);
     config.topic = capi::topic_name(c.topic, sizeof c.topic, "cfg.topic");
-    config.feeds.source.open_timeout_ms = static_cast<int>(c.open_timeout_ms);
-    config.feeds.source.read_timeout_ms = static_cast<int>(c.read_timeout_ms);
-    config.feeds.source.picture_rate_hz = c.picture_rate_hz;
-    config.feeds.reconnect_max_ms = static_cast<int>(c.reconnect_max_ms);
+    config.feeds = feeds;
     config.detect_rate_hz = c.detect_rate_hz;
     auto node = std::make_unique<KeypointNode>(config, specs, camera_names);
     *out = capi::make_handle<octocap_node_t>(std::move(node));
 #else
+    (void)feeds;
+    (void)specs;
+    (void)camera_names;
     no_dds();
 #endif
   });
@@ -156,9 +143,7 @@ octocap_result_t octocap_node_get_camera_status(const octocap_node_t* n, uint32_
   return capi::guard([&] {
 #ifdef OCTOCAP_HAVE_DDS
     const KeypointNode& node = node_of(n);
-    if (index >= node.camera_count())
-      throw Error(Errc::invalid_argument, "camera " + std::to_string(index) + " out of range (" +
-                                              std::to_string(node.camera_count()) + " cameras)");
+    capi::check_camera_index(index, node.camera_count());
     capi::fill_camera_status(node.camera_status(index), node.camera_name(index), out);
 #else
     capi::checked(n, "node");

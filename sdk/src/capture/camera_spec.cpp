@@ -21,6 +21,10 @@ bool starts_with(const std::string& s, const char* prefix) { return s.rfind(pref
 
 }  // namespace
 
+bool valid_remote_name(const std::string& name) {
+  return !name.empty() && name.size() <= 31 && name.find('/') == std::string::npos;
+}
+
 CameraSpec parse_camera_spec(const std::string& text) {
   CameraSpec spec;
   spec.text = text;
@@ -43,10 +47,7 @@ CameraSpec parse_camera_spec(const std::string& text) {
       spec.kind = SourceKind::remote;
       spec.node = rest.substr(0, slash);
       spec.camera = slash == std::string::npos ? "" : rest.substr(slash + 1);
-      auto bad = [](const std::string& name) {
-        return name.empty() || name.size() > 31 || name.find('/') != std::string::npos;
-      };
-      if (bad(spec.node) || bad(spec.camera))
+      if (!valid_remote_name(spec.node) || !valid_remote_name(spec.camera))
         throw Error(Errc::invalid_argument, "camera '" + text + "': a remote camera is dds://NODE/CAMERA (names of 1 to "
                                                 "31 bytes, as the node publishes them)");
       spec.location = text;

@@ -19,6 +19,9 @@ struct CameraSpec {
   bool live() const { return kind == SourceKind::device || kind == SourceKind::network || kind == SourceKind::remote; }
 };
 
+// A name in dds://NODE/CAMERA (a capture node's, or one of its cameras'): 1 to 31 bytes, no '/'.
+bool valid_remote_name(const std::string& name);
+
 // Throws Error(invalid_argument) for an empty spec or an unknown URL scheme, Error(io) for a file, folder or device
 // that does not exist; the message names the spec.
 CameraSpec parse_camera_spec(const std::string& text);

@@ -47,7 +47,7 @@ KeypointNode::KeypointNode(const NodeConfig& config, const std::vector<std::stri
   if (!names.empty() && names.size() != cameras.size())
     throw Error(Errc::invalid_argument, std::to_string(names.size()) + " camera names for " +
                                             std::to_string(cameras.size()) + " cameras");
-  if (config_.name.empty() || config_.name.size() > 31 || config_.name.find('/') != std::string::npos)
+  if (!valid_remote_name(config_.name))
     throw Error(Errc::invalid_argument, "node name '" + config_.name + "': 1 to 31 bytes, no '/'");
   for (size_t c = 0; c < cameras.size(); ++c) {
     auto cam = std::make_unique<Camera>();
@@ -58,7 +58,7 @@ KeypointNode::KeypointNode(const NodeConfig& config, const std::vector<std::stri
     } else {
       cam->name = names[c];
     }
-    if (cam->name.empty() || cam->name.size() > 31 || cam->name.find('/') != std::string::npos)
+    if (!valid_remote_name(cam->name))
       throw Error(Errc::invalid_argument, "camera name '" + cam->name + "': 1 to 31 bytes, no '/'");
     for (const auto& other : cameras_)
       if (other->name == cam->name) throw Error(Errc::invalid_argument, "two cameras named '" + cam->name + "'");
