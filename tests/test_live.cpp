@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "capture/frame_set.h"
+#include "capture/stream_clock.h"
 #include "octocap/octocap.hpp"
 #include "support/child_process.h"
 #include "support/live_helpers.h"
@@ -35,6 +36,32 @@ using testing::wait_until;
 const auto median = testing::median_of;
 
 }  // namespace
+
+TEST_CASE("stream clock: capture times from a stream's own timestamps survive late, bursty decoding", "[live]") {
+  // A 60 Hz camera; the host decodes each picture 5 ms late at best, often later, and in bursts of 80 ms.
+  const int64_t period = 16667, origin = 5000000, least = 5000;
+  auto delay = [&](int k) -> int64_t { return k % 7 == 0 ? least : (k % 30 < 6 ? 80000 - (k % 30) * 12000 : 20000); };
+  octocap::StreamClock clock;
+  double worst = 0;
+  for (int k = 0; k < 300; ++k) {
+    const int64_t capture = origin + k * period, grab = capture + std::max(least, delay(k));
+    const int64_t estimate = clock.capture_us(grab, k * period);
+    CHECK(estimate <= grab);
+    if (k * period > 2500000) worst = std::max(worst, std::abs(static_cast<double>(estimate - (capture + least))));
+  }
+  CHECK(clock.trusted());
+  CHECK(worst <= 1000);  // within a millisecond of capture + the least delay, however late it was decoded
+  // The stream restarts (a reconnect): its clock is not trusted until it has proved steady again.
+  int64_t t = origin + 400 * period;
+  CHECK(clock.capture_us(t + 30000, 0) == t + 30000);
+  CHECK_FALSE(clock.trusted());
+  // Timestamps that run a tenth slower than real time (a made-up frame count) are never trusted.
+  octocap::StreamClock slow;
+  for (int k = 0; k < 400; ++k) {
+    const int64_t grab = origin + k * period + delay(k);
+    CHECK(slow.capture_us(grab, k * period * 9 / 10) == grab);
+  }
+}
 
 TEST_CASE("frame sets: each camera's picture nearest the set's time, late and silent cameras left out", "[live]") {
   using octocap::Candidate;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "capture/stream_clock.h"
 #include "core/clock.h"
 #include "core/error.h"
 #include "core/log.h"
@@ -60,6 +61,7 @@ void CameraFeed::run() {
   const bool pace = options_.pace_files && !spec_.live();
   int64_t start_us = 0;
   bool started = false;
+  StreamClock clock;  // live sources: capture times from the stream's own timestamps, once they prove steady
   while (!stop_) {
     cv::Mat image;  // a fresh buffer each time: a consumer may still hold the previous picture
     int64_t stream_us = 0;
@@ -82,6 +84,7 @@ void CameraFeed::run() {
       }
       log(LogLevel::warning, "camera '" + spec_.text + "': stream broke, reconnecting");
       if (!reopen()) break;
+      clock.reset();
       continue;
     }
     if (pace) {
@@ -97,7 +100,7 @@ void CameraFeed::run() {
     frame.width = image.cols;
     frame.height = image.rows;
     frame.image = std::move(image);
-    frame.grab_us = monotonic_us();
+    frame.grab_us = spec_.live() ? clock.capture_us(monotonic_us(), stream_us) : monotonic_us();
     frame.stream_us = stream_us;
     deliver(std::move(frame));
   }
