@@ -77,7 +77,7 @@ Accuracy offline(const octocap::Calibration& calib) {
 }  // namespace
 
 TEST_CASE("live: four RTSP cameras on loopback solve as offline; one killed and restarted is reconnected",
-          "[live][rtsp][real]") {
+          "[live][rtsp][real][serial]") {
   REQUIRE(fs::exists("/usr/bin/python3"));  // Debian's, with python3-gi (scripts/install-deps.sh)
   for (int c = 0; c < 4; ++c) REQUIRE(fs::exists(stream_file(c)));
   const int base_port = 40000 + static_cast<int>(getpid() % 5000) * 4;
