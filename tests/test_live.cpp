@@ -8,8 +8,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <cstring>
 #include <chrono>
 #include <filesystem>
+#include <fstream>
+#include <map>
 #include <string>
 #include <thread>
 #include <vector>
@@ -34,6 +38,28 @@ using testing::kVideos;
 using testing::lightning;
 using testing::wait_until;
 const auto median = testing::median_of;
+
+// The real take's pictures as four folders (every 2nd frame, half size: what a lower-resolution camera gives; the
+// session scales them to the calibration's pixels), `frames` pictures each.
+std::vector<std::string> real_picture_folders(const testing::TempDir& dir, int frames) {
+  std::vector<std::string> folders;
+  for (int c = 1; c <= 4; ++c) {
+    folders.push_back(dir.file("cam0" + std::to_string(c)));
+    fs::create_directories(folders.back());
+    const testing::Run r = testing::run_command("ffmpeg -loglevel error -i " + kVideos + "cam0" + std::to_string(c) +
+                                                ".mp4 -vf \"select=not(mod(n\\,2)),scale=544:960\" -vsync vfr -frames:v " +
+                                                std::to_string(frames) + " -q:v 3 " + folders.back() + "/%04d.jpg");
+    INFO(r.output);
+    REQUIRE(r.status == 0);
+  }
+  return folders;
+}
+
+size_t files_in(const fs::path& dir, const std::string& extension) {
+  size_t n = 0;
+  for (const auto& e : fs::directory_iterator(dir)) n += e.path().extension() == extension;
+  return n;
+}
 
 }  // namespace
 
@@ -115,19 +141,9 @@ TEST_CASE("frame sets: each camera's picture nearest the set's time, late and si
 }
 
 TEST_CASE("live: four real views played as picture-folder cameras solve as the offline solve does", "[live][real]") {
-  // The real take's pictures (every 2nd frame, half size: what a lower-resolution camera gives; the session scales
-  // them to the calibration's pixels), four folders played as cameras at 10 Hz.
+  // The real take's pictures, four folders played as cameras at 10 Hz.
   testing::TempDir dir;
-  std::vector<std::string> folders;
-  for (int c = 1; c <= 4; ++c) {
-    folders.push_back(dir.file("cam0" + std::to_string(c)));
-    fs::create_directories(folders.back());
-    const testing::Run r = testing::run_command("ffmpeg -loglevel error -i " + kVideos + "cam0" + std::to_string(c) +
-                                                ".mp4 -vf \"select=not(mod(n\\,2)),scale=544:960\" -vsync vfr -q:v 3 " +
-                                                folders.back() + "/%04d.jpg");
-    INFO(r.output);
-    REQUIRE(r.status == 0);
-  }
+  const std::vector<std::string> folders = real_picture_folders(dir, 1000);
   const octocap::Calibration calib = octocap::Calibration::load(kDemo + "/calibration/Calib_qualisys.toml");
   octocap_live_config_t cfg;
   octocap_live_config_init(&cfg);
@@ -172,6 +188,84 @@ TEST_CASE("live: four real views played as picture-folder cameras solve as the o
     CHECK(cam.nominal_fps == 10);
     CHECK(std::string(cam.name).size() > 0);
   }
+}
+
+TEST_CASE("live: a recorded take solves again offline exactly as it solved live", "[live][real][record]") {
+  testing::TempDir dir;
+  const std::vector<std::string> folders = real_picture_folders(dir, 20);
+  const octocap::Calibration calib = octocap::Calibration::load(kDemo + "/calibration/Calib_qualisys.toml");
+  octocap_live_config_t cfg;
+  octocap_live_config_init(&cfg);
+  cfg.picture_rate_hz = 10;
+  const std::string take = dir.file("take");
+  octocap::Live live(cfg, coco_session(), calib, folders);  // no temporal filter: each frame depends on its set only
+  live.set_detector(lightning());
+  live.set_recording(take);
+  live.start();
+  std::map<int64_t, std::vector<octocap_joint_t>> live_frames;
+  while (std::optional<octocap::Frame> f = live.take(10000))
+    live_frames[f->summary().frame_index] = f->person_count() ? f->keypoints3d(0) : std::vector<octocap_joint_t>{};
+  live.stop();
+  const octocap_live_stats_t stats = live.stats();
+  INFO("frame sets " << stats.frame_sets << ", recorded " << stats.sets_recorded << ", pictures left out of "
+                     << stats.recording_pictures_dropped << ", taken " << live_frames.size());
+  REQUIRE(stats.frame_sets >= 5);
+  CHECK(stats.sets_recorded == stats.frame_sets);  // every set, its keypoints always
+
+  // The folder: the calibration, one JSON per camera and set, one picture per camera and set kept, one time row each.
+  for (uint32_t c = 0; c < 4; ++c) {
+    const std::string place = "0" + std::to_string(c + 1) + "_" + live.camera(c).name;
+    CHECK(files_in(fs::path(take) / "keypoints" / (place + "_json"), ".json") == stats.sets_recorded);
+    CHECK(files_in(fs::path(take) / "images" / place, ".jpg") == stats.sets_recorded - stats.recording_pictures_dropped);
+  }
+  std::ifstream times(fs::path(take) / "timestamps.csv");
+  std::string header, row;
+  std::getline(times, header);
+  std::string expected = "set,time_us,pictures";
+  for (uint32_t c = 0; c < 4; ++c) expected += std::string(",") + live.camera(c).name + "_us";
+  CHECK(header == expected);
+  size_t rows = 0;
+  while (std::getline(times, row)) rows += !row.empty();
+  CHECK(rows == stats.sets_recorded);
+
+  // Solved again from the recording, with the recording's own calibration: every frame as it was live.
+  const octocap::Calibration recorded_calib = octocap::Calibration::load(take + "/calibration.toml");
+  octocap::Recording rec(take + "/keypoints", OCTOCAP_LAYOUT_COCO_17);
+  REQUIRE(rec.view_count() == 4);
+  REQUIRE(rec.frame_count() == stats.sets_recorded);
+  octocap::Session offline(coco_session(), recorded_calib);
+  std::vector<octocap_keypoint2d_t> keypoints;
+  std::vector<uint32_t> people;
+  size_t compared = 0, with_person = 0;
+  double worst_mm = 0;
+  for (uint32_t f = 0; f < rec.frame_count(); ++f) {
+    rec.read_frame(f, keypoints, people);
+    offline.solve_keypoints(keypoints.data(), people.data(), 4, f * 100000);
+    const octocap::Frame frame = offline.frame();
+    const bool person = frame.person_count() > 0;
+    const auto it = live_frames.find(frame.summary().frame_index);
+    if (it == live_frames.end()) continue;  // replaced before the test took it
+    ++compared;
+    with_person += person;
+    const std::vector<octocap_joint_t> again = person ? frame.keypoints3d(0) : std::vector<octocap_joint_t>{};
+    REQUIRE(again.size() == it->second.size());
+    for (size_t k = 0; k < again.size(); ++k) {
+      REQUIRE(again[k].valid == it->second[k].valid);
+      if (!again[k].valid) continue;
+      for (int a = 0; a < 3; ++a)
+        worst_mm = std::max(worst_mm, 1000.0 * std::abs(double{again[k].position[a]} - it->second[k].position[a]));
+    }
+  }
+  INFO("compared " << compared << " frames, " << with_person << " with a person, worst difference " << worst_mm << " mm");
+  CHECK(compared >= 0.8 * static_cast<double>(stats.frame_sets));
+  CHECK(with_person >= 0.8 * static_cast<double>(compared));
+  CHECK(worst_mm < 0.01);  // the JSON keeps 10 significant digits
+
+  // A folder that already holds a take is refused at start, before any camera opens.
+  octocap::Live again(cfg, coco_session(), calib, folders);
+  again.set_detector(lightning());
+  again.set_recording(take);
+  CHECK_THROWS_WITH(again.start(), ContainsSubstring("already holds a take"));
 }
 
 TEST_CASE("live: real videos as cameras are played at their own rate and solved", "[live][real]") {
@@ -232,6 +326,20 @@ TEST_CASE("live: misuse and unopenable cameras are clear errors", "[live][misuse
   stats.struct_size = sizeof stats;
   REQUIRE(octocap_live_get_stats(l, &stats) == OCTOCAP_OK);
   CHECK(stats.running == 0);
+  // A 1.1 caller's stats struct ended before the recording's figures: filled up to its size, not a byte further.
+  std::vector<unsigned char> box(sizeof(octocap_live_stats_t) + 16, 0xA5);
+  const uint32_t size_1_1 = offsetof(octocap_live_stats_t, sets_recorded);
+  std::memcpy(box.data(), &size_1_1, 4);
+  CHECK(octocap_live_get_stats(l, reinterpret_cast<octocap_live_stats_t*>(box.data())) == OCTOCAP_OK);
+  CHECK(std::all_of(box.begin() + size_1_1, box.end(), [](unsigned char b) { return b == 0xA5; }));
+  stats.struct_size = 40;
+  CHECK(octocap_live_get_stats(l, &stats) == OCTOCAP_ERROR_STRUCT_SIZE);
+  // Recording into a folder that cannot be made: start fails with IO naming it, and opens no camera.
+  CHECK(octocap_live_set_recording(nullptr, "x") == OCTOCAP_ERROR_INVALID_HANDLE);
+  REQUIRE(octocap_live_set_recording(l, "/proc/octocap-no-such-take") == OCTOCAP_OK);
+  CHECK(octocap_live_start(l) == OCTOCAP_ERROR_IO);
+  CHECK_THAT(octocap_last_error(), ContainsSubstring("/proc/octocap-no-such-take"));
+  REQUIRE(octocap_live_set_recording(l, nullptr) == OCTOCAP_OK);  // off again
   octocap_live_destroy(l);
 
   // Queries before the first frame, start twice, stop twice, destroy while running.
@@ -250,6 +358,7 @@ TEST_CASE("live: misuse and unopenable cameras are clear errors", "[live][misuse
   CHECK(octocap_live_start(l) == OCTOCAP_ERROR_INVALID_ARGUMENT);
   CHECK(octocap_live_set_detector(l, &det) == OCTOCAP_ERROR_INVALID_ARGUMENT);  // not while running
   CHECK(octocap_live_set_latency_offsets(l, offsets, 4) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  CHECK(octocap_live_set_recording(l, "/tmp/x") == OCTOCAP_ERROR_INVALID_ARGUMENT);  // not while running
   octocap_camera_status_t cam{};
   cam.struct_size = sizeof cam;
   CHECK(octocap_live_get_camera_status(l, 4, &cam) == OCTOCAP_ERROR_INVALID_ARGUMENT);

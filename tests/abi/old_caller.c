@@ -1,6 +1,7 @@
 /* A program as it was written against an old header (tests/abi/headers/, taken from git history), compiled against
  * that header and run against today's library. OLD_API says which header: 1 = 0.1, 2 = 0.2 (streaming),
- * 3 = 0.2 with VMC, 4 = 0.3 (detector nested in the session config), 5 = the last 0.3.
+ * 3 = 0.2 with VMC, 4 = 0.3 (detector nested in the session config), 5 = the last 0.3, 6 = 1.1 (live capture,
+ * capture nodes).
  *
  * It checks what the compatibility promise says: no _init writes past the caller's struct (guard bytes after each
  * struct stay intact), every old struct size is accepted, and the old per-source queries still solve the built-in
@@ -101,6 +102,10 @@ int main(int argc, char** argv) {
   CHECK_INIT(octocap_extrinsics_options_t, octocap_extrinsics_options_init);
   CHECK_INIT(octocap_detector_config_t, octocap_detector_config_init);
 #endif
+#if OLD_API >= 6
+  CHECK_INIT(octocap_live_config_t, octocap_live_config_init);
+  CHECK_INIT(octocap_node_config_t, octocap_node_config_init);
+#endif
 
   expect(octocap_calibration_load(argv[1], &calib) == OCTOCAP_OK, "loading the calibration");
   expect(octocap_recording_open(argv[2], OCTOCAP_LAYOUT_AUTO, &rec) == OCTOCAP_OK, "opening the keypoints");
@@ -109,7 +114,7 @@ int main(int argc, char** argv) {
   octocap_recording_frame_count(rec, &frames);
   octocap_recording_layout(rec, &layout);
 
-#if OLD_API >= 4
+#if OLD_API >= 4 && OLD_API < 6
   /* A 0.3 program that fills the fields past 0.1 itself and gives its whole struct's size: the nested detector config
    * is read at its old place. */
   memset((unsigned char*)cfg + cfg->struct_size, 0, sizeof *cfg - cfg->struct_size);

@@ -38,6 +38,7 @@ int live(const LiveOptions& o) {
   apply_outputs(o.out, scfg);
   octocap::Live capture(cfg, scfg, calib, o.cameras);
   capture.set_detector(o.detector.config());
+  if (!o.record.empty()) capture.set_recording(o.record);
   octocap_up_axis_t up = OCTOCAP_UP_Y;
   {
     // The up axis the session decides from the cameras, for the TRC: asked of a session without outputs, so that no
@@ -99,6 +100,10 @@ int live(const LiveOptions& o) {
     std::printf("\n");
   }
   if (!o.output.empty()) std::printf("  wrote %s\n", o.output.c_str());
+  if (!o.record.empty())
+    std::printf("  recorded %llu frame sets into %s (pictures left out of %llu: the disk was behind)\n",
+                static_cast<unsigned long long>(s.sets_recorded), o.record.c_str(),
+                static_cast<unsigned long long>(s.recording_pictures_dropped));
   return 0;
 }
 

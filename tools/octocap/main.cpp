@@ -97,6 +97,7 @@ int main(int argc, char** argv) {
   lv->add_option("--output", live.output, "Write the take as TRC");
   lv->add_option("--csv", live.csv, "Also write a CSV (calibration world frame)");
   lv->add_option("--bvh", live.bvh, "Also write the bone animation as BVH");
+  lv->add_option("--record", live.record, "Record the take into this new folder: calibration.toml, images/ (pictures), keypoints/ (OpenPose JSON), timestamps.csv; solve it again with octocap solve --keypoints DIR/keypoints");
   lv->add_option("--method", live.method, "3D method")->check(CLI::IsMember({"auto", "subdivision", "triangulation"}))->capture_default_str();
   lv->add_option("--filter", live.filter, "Temporal filter")->check(CLI::IsMember({"none", "oneeuro"}))->capture_default_str();
   add_output_options(lv, live.out);

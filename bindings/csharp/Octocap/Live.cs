@@ -44,6 +44,11 @@ namespace Octocap
             OctocapException.Check(NativeMethods.octocap_live_set_latency_offsets(_handle, offsetsUs, (uint)offsetsUs.Length));
         }
 
+        /// <summary>Records the next run into <paramref name="directory"/> (pictures, OpenPose JSON keypoints, capture
+        /// times, the calibration: a take <c>octocap solve</c> reads again); null turns it off. Before Start.</summary>
+        public void SetRecording(string directory) =>
+            OctocapException.Check(NativeMethods.octocap_live_set_recording(_handle, directory == null ? null : NativeMethods.Utf8Z(directory)));
+
         /// <summary>Opens every camera (an OctocapException naming one that cannot be opened) and starts.</summary>
         public void Start() => OctocapException.Check(NativeMethods.octocap_live_start(_handle));
         public void Stop() => OctocapException.Check(NativeMethods.octocap_live_stop(_handle));

@@ -359,6 +359,9 @@ namespace Octocap
         public float PublishMs;
         public float LatencyP50Ms;
         public float LatencyP99Ms;
+        // 1.2
+        public ulong SetsRecorded;
+        public ulong RecordingPicturesDropped;
     }
 
     public enum CameraState : int { Stopped = 0, Connecting = 1, Streaming = 2, Reconnecting = 3, Ended = 4, Failed = 5 }
@@ -453,6 +456,7 @@ namespace Octocap
         [DllImport(Lib)] internal static extern Result octocap_live_create(ref LiveConfig cfg, ref SessionConfig sessionCfg, CalibrationHandle calib, IntPtr[] cameras, uint count, out LiveHandle live);
         [DllImport(Lib)] internal static extern Result octocap_live_set_detector(LiveHandle live, ref DetectorConfig cfg);
         [DllImport(Lib)] internal static extern Result octocap_live_set_latency_offsets(LiveHandle live, int[] offsetsUs, uint count);
+        [DllImport(Lib)] internal static extern Result octocap_live_set_recording(LiveHandle live, byte[] directory);
         [DllImport(Lib)] internal static extern Result octocap_live_start(LiveHandle live);
         [DllImport(Lib)] internal static extern Result octocap_live_stop(LiveHandle live);
         [DllImport(Lib)] internal static extern void octocap_live_destroy(IntPtr live);

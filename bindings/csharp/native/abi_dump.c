@@ -97,6 +97,7 @@ static void layout(void) {
   FIELD(octocap_live_stats_t, frames_not_taken); FIELD(octocap_live_stats_t, fps); FIELD(octocap_live_stats_t, capture_ms);
   FIELD(octocap_live_stats_t, detect_ms); FIELD(octocap_live_stats_t, solve_ms); FIELD(octocap_live_stats_t, publish_ms);
   FIELD(octocap_live_stats_t, latency_p50_ms); FIELD(octocap_live_stats_t, latency_p99_ms);
+  FIELD(octocap_live_stats_t, sets_recorded); FIELD(octocap_live_stats_t, recording_pictures_dropped);
   SIZE(octocap_camera_status_t);
   FIELD(octocap_camera_status_t, struct_size); FIELD(octocap_camera_status_t, state);
   FIELD(octocap_camera_status_t, grabbed); FIELD(octocap_camera_status_t, used); FIELD(octocap_camera_status_t, dropped);

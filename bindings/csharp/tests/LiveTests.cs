@@ -27,6 +27,8 @@ namespace Octocap.Tests
                     Assert.AreEqual(Result.InvalidArgument,
                                     Assert.Throws<OctocapException>(() => live.SetLatencyOffsets(new[] { 0, 1 })).Result);
                     live.SetLatencyOffsets(new[] { 0, 0, 0, 0 });
+                    string take = System.IO.Path.Combine(System.IO.Path.GetTempPath(), "octocap-cs-take-" + Guid.NewGuid());
+                    live.SetRecording(take);
                     Assert.IsNull(live.TryGetFrame(), "nothing before the start, and no waiting");
                     live.Start();
                     int withPerson = 0;
@@ -40,6 +42,11 @@ namespace Octocap.Tests
                             }
                     Assert.GreaterOrEqual(withPerson, 1);
                     Assert.AreEqual(1u, live.Stats.Finished);
+                    live.Stop();
+                    Assert.AreEqual(live.Stats.FrameSets, live.Stats.SetsRecorded, "every solved set is recorded");
+                    Assert.IsTrue(System.IO.File.Exists(System.IO.Path.Combine(take, "timestamps.csv")));
+                    Assert.IsTrue(System.IO.File.Exists(System.IO.Path.Combine(take, "calibration.toml")));
+                    System.IO.Directory.Delete(take, true);
                     for (int c = 0; c < 4; ++c)
                     {
                         CameraStatus s = live.Camera(c);

@@ -83,7 +83,7 @@ extern "C" {
 
 /** Version of this header. The library's own is octocap_version_number(). */
 #define OCTOCAP_VERSION_MAJOR 1
-#define OCTOCAP_VERSION_MINOR 1
+#define OCTOCAP_VERSION_MINOR 2
 #define OCTOCAP_VERSION_PATCH 0
 /** MAJOR * 10000 + MINOR * 100 + PATCH: 10000 for 1.0.0. */
 #define OCTOCAP_VERSION_NUMBER (OCTOCAP_VERSION_MAJOR * 10000 + OCTOCAP_VERSION_MINOR * 100 + OCTOCAP_VERSION_PATCH)
@@ -753,6 +753,10 @@ typedef struct octocap_live_stats_t {
   float publish_ms;              /**< Handing the frame over. */
   float latency_p50_ms;          /**< Grab of the oldest picture -> frame available, median of the last 1000 frames. */
   float latency_p99_ms;          /**< ... 99th percentile. */
+  /* 1.2 */
+  uint64_t sets_recorded;        /**< Frame sets written by the recording (octocap_live_set_recording()). */
+  uint64_t recording_pictures_dropped; /**< Of those, sets whose pictures were left out: the disk was behind (their
+                                      keypoints and times are there; every camera's pictures of a set go together). */
 } octocap_live_stats_t;
 
 /** State of one camera. */
@@ -804,6 +808,25 @@ OCTOCAP_API octocap_result_t octocap_live_set_detector(octocap_live_t* live, con
  *  frame sets are matched. Before start. Errors: INVALID_ARGUMENT (wrong count, beyond +-10 s, while running). */
 OCTOCAP_API octocap_result_t octocap_live_set_latency_offsets(octocap_live_t* live, const int32_t* offsets_us,
                                                               uint32_t camera_count);
+/**
+ * Records the next run (from octocap_live_start() to octocap_live_stop()) into the folder `directory`, so that the take
+ * can be solved again offline (`octocap solve --keypoints DIR/keypoints --calibration DIR/calibration.toml`) or
+ * detected again (`--images DIR/images`). Every frame set the engine solves is written:
+ *
+ *     DIR/calibration.toml                                  the calibration the capture ran with
+ *     DIR/keypoints/NN_<camera>_json/<camera>_<set>_keypoints.json   OpenPose JSON: the 2D people the set was
+ *                                                           solved from, calibration pixels (none: camera absent)
+ *     DIR/images/NN_<camera>/<set>.jpg                      the pictures (black: camera absent from the set)
+ *     DIR/timestamps.csv                                    set,time_us,pictures,<camera>_us,... capture times on
+ *                                                           the host's monotonic clock (empty: absent)
+ *
+ * NN is the camera's place in the calibration (01, 02, ...). Writing runs on a thread of its own behind a short
+ * queue: when the disk is behind, a set's pictures are left out (counted in octocap_live_stats_t), never its keypoints.
+ * Cameras detected on a capture node have keypoints only. `directory` NULL or "" turns recording off. Before start.
+ * Errors: INVALID_ARGUMENT (while running); octocap_live_start() fails with IO when the folder cannot be made or already
+ * holds a take. Since 1.2.
+ */
+OCTOCAP_API octocap_result_t octocap_live_set_recording(octocap_live_t* live, const char* directory);
 /** Loads the detector if needed, opens every camera (IO naming the first that cannot be opened; none stays open) and
  *  starts the threads. INVALID_ARGUMENT when already running. */
 OCTOCAP_API octocap_result_t octocap_live_start(octocap_live_t* live);

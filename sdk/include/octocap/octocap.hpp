@@ -227,6 +227,10 @@ class Live {
   }
   octocap_live_t* get() const { return l_.get(); }
   void set_detector(const octocap_detector_config_t& cfg) { check(octocap_live_set_detector(l_.get(), &cfg), "detector"); }
+  /** Records the next run into `directory` (octocap_live_set_recording); "" turns it off. */
+  void set_recording(const std::string& directory) {
+    check(octocap_live_set_recording(l_.get(), directory.c_str()), "recording");
+  }
   void start() { check(octocap_live_start(l_.get()), "starting the live capture"); }
   void stop() { check(octocap_live_stop(l_.get()), "stopping the live capture"); }
   /** The next solved frame, or nothing within `timeout_ms`. */

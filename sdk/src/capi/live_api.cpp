@@ -126,6 +126,10 @@ octocap_result_t octocap_live_set_latency_offsets(octocap_live_t* l, const int32
   });
 }
 
+octocap_result_t octocap_live_set_recording(octocap_live_t* l, const char* directory) {
+  return capi::guard([&] { engine_of(l).set_recording(directory ? directory : ""); });
+}
+
 octocap_result_t octocap_live_start(octocap_live_t* l) {
   return capi::guard([&] { engine_of(l).start(); });
 }
@@ -163,7 +167,9 @@ octocap_result_t octocap_live_get_frame(const octocap_live_t* l, octocap_frame_t
 octocap_result_t octocap_live_get_stats(const octocap_live_t* l, octocap_live_stats_t* out) {
   return capi::guard([&] {
     const LiveEngine& e = engine_of(l);
-    capi::fill_sized(out, sizeof(octocap_live_stats_t), "octocap_live_stats_t", [&](octocap_live_stats_t& o) {
+    // 1.0's and 1.1's struct ended before sets_recorded: their callers get what their size holds.
+    capi::fill_sized(out, offsetof(octocap_live_stats_t, sets_recorded), "octocap_live_stats_t",
+                     [&](octocap_live_stats_t& o) {
       const LiveStats s = e.stats();
       o.running = s.running ? 1 : 0;
       o.finished = s.finished ? 1 : 0;
@@ -179,6 +185,8 @@ octocap_result_t octocap_live_get_stats(const octocap_live_t* l, octocap_live_st
       o.publish_ms = static_cast<float>(s.publish_ms);
       o.latency_p50_ms = static_cast<float>(s.latency_p50_ms);
       o.latency_p99_ms = static_cast<float>(s.latency_p99_ms);
+      o.sets_recorded = s.sets_recorded;
+      o.recording_pictures_dropped = s.recording_pictures_dropped;
     });
   });
 }

@@ -1,6 +1,7 @@
 #include "io/openpose_json.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -167,6 +168,30 @@ std::vector<std::vector<Person2D>> OpenPoseRecording::read_frame(size_t frame) c
     for (size_t p = 0; p < a.size(); ++p) out[v].push_back(interpolate_person(a[p], b[p], w, 0.05));
   }
   return out;
+}
+
+}  // namespace octocap
+
+namespace octocap {
+
+void write_openpose_file(const std::string& path, const std::vector<Person2D>& people) {
+  std::string text = "{\"version\":1.3,\"people\":[";
+  char number[80];
+  for (size_t p = 0; p < people.size(); ++p) {
+    text += p ? ",{\"person_id\":[-1],\"pose_keypoints_2d\":[" : "{\"person_id\":[-1],\"pose_keypoints_2d\":[";
+    for (size_t k = 0; k < people[p].size(); ++k) {
+      Keypoint2D kp = people[p][k];
+      // JSON has no NaN: a keypoint that is not a number is one not detected, as the reader takes it.
+      if (!std::isfinite(kp.x) || !std::isfinite(kp.y) || !std::isfinite(kp.confidence)) kp = Keypoint2D{};
+      std::snprintf(number, sizeof number, "%s%.10g,%.10g,%.10g", k ? "," : "", kp.x, kp.y, kp.confidence);
+      text += number;
+    }
+    text += "]}";
+  }
+  text += "]}\n";
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  if (!out.flush()) throw Error(Errc::io, path + ": cannot write keypoint file");
 }
 
 }  // namespace octocap

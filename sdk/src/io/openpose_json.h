@@ -11,6 +11,9 @@ namespace octocap {
 // Every person of one file. keypoint_count 0 accepts any count (all people must agree), else it is enforced.
 // Throws Error(io / parse) naming the file.
 std::vector<Person2D> read_openpose_file(const std::string& path, size_t keypoint_count);
+// OpenPose's own JSON (version 1.3) with every person's keypoints, written to `path` (10 significant digits: what
+// read_openpose_file() reads back is what was written). Throws Error(io).
+void write_openpose_file(const std::string& path, const std::vector<Person2D>& people);
 
 // A Pose2Sim-style folder: one sub-folder per camera (sorted by name), frames = files sorted by name.
 class OpenPoseRecording {

@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "core/stats.h"
+#include "pipeline/live_recorder.h"
 
 namespace octocap {
 namespace {
@@ -73,16 +74,27 @@ void LiveEngine::set_latency_offsets(const std::vector<int64_t>& offsets_us) {
   config_.latency_offsets_us = offsets_us;
 }
 
+void LiveEngine::set_recording(const std::string& directory) {
+  if (running_) throw Error(Errc::invalid_argument, "the live engine is running: set the recording before start");
+  record_dir_ = directory;
+}
+
 void LiveEngine::start() {
   if (running_) throw Error(Errc::invalid_argument, "the live engine is already running");
   // Fail before opening cameras; a hub whose cameras are all remote needs no detector (nor models).
   const bool local = std::any_of(feeds_.begin(), feeds_.end(), [](const auto& f) { return f->spec().kind != SourceKind::remote; });
   if (local && !session_->detector()) session_->set_detector(config_.session.detector);
+  if (!record_dir_.empty()) {
+    std::vector<bool> pictures;
+    for (const auto& f : feeds_) pictures.push_back(f->spec().kind != SourceKind::remote);
+    recorder_ = std::make_unique<LiveRecorder>(record_dir_, calib_, pictures);  // Error(io) before any camera opens
+  }
   size_t opened = 0;
   try {
     for (; opened < feeds_.size(); ++opened) feeds_[opened]->start();
   } catch (...) {
     for (size_t c = 0; c < opened; ++c) feeds_[c]->stop();
+    recorder_.reset();
     throw;
   }
   sync_ = FrameSetOptions{};
@@ -123,8 +135,16 @@ void LiveEngine::stop() {
   if (thread_.joinable()) thread_.join();
   for (auto& f : feeds_) f->stop();
   running_ = false;
+  if (recorder_) recorder_->close();  // everything queued is on disk when stop() returns
   const std::lock_guard<std::mutex> lock(mutex_);
   stats_.running = false;
+  if (recorder_) {
+    const RecorderStats r = recorder_->stats();
+    stats_.sets_recorded = r.sets;
+    stats_.recording_pictures_dropped = r.pictures_dropped;
+    if (!recorder_->error().empty()) stats_.last_error = recorder_->error();
+    recorder_.reset();
+  }
 }
 
 std::shared_ptr<const FrameResult> LiveEngine::latest() const {
@@ -144,6 +164,12 @@ std::shared_ptr<const FrameResult> LiveEngine::take(int timeout_ms) {
 LiveStats LiveEngine::stats() const {
   const std::lock_guard<std::mutex> lock(mutex_);
   LiveStats s = stats_;
+  if (recorder_) {
+    const RecorderStats r = recorder_->stats();
+    s.sets_recorded = r.sets;
+    s.recording_pictures_dropped = r.pictures_dropped;
+    if (!recorder_->error().empty()) s.last_error = recorder_->error();
+  }
   std::vector<double> latencies = latencies_ms_;
   s.latency_p50_ms = quantile_in_place(latencies, 0.5, 0);
   s.latency_p99_ms = quantile_in_place(latencies, 0.99, 0);
@@ -219,6 +245,7 @@ void LiveEngine::solve_set(const std::vector<CapturedFrame>& frames, const std::
     return;
   }
   const int64_t t1 = monotonic_us();
+  if (recorder_) record(frames, present, set_time_us);
   auto frame = std::make_shared<const FrameResult>(session_->result());
   const bool detected = std::any_of(views.begin(), views.end(), [](const ImageView& v) { return !absent(v); });
   const double detect_ms = detected && session_->detector() ? session_->detector()->timings().total_ms : 0;
@@ -245,6 +272,25 @@ void LiveEngine::solve_set(const std::vector<CapturedFrame>& frames, const std::
     last_solved_us_ = t1;
   }
   new_output_.notify_all();
+}
+
+void LiveEngine::record(const std::vector<CapturedFrame>& frames, const std::vector<bool>& present,
+                        int64_t set_time_us) {
+  RecordedSet set;
+  set.time_us = set_time_us;
+  set.people = session_->image_people();
+  set.people.resize(frames.size());
+  set.capture_us.assign(frames.size(), 0);
+  set.pictures.resize(frames.size());
+  for (size_t c = 0; c < frames.size(); ++c) {
+    if (!present[c]) {
+      set.people[c].clear();  // nobody seen: the solve went without this camera
+      continue;
+    }
+    set.capture_us[c] = frames[c].grab_us;
+    set.pictures[c] = frames[c].image;  // shared, never copied: every picture has a buffer of its own
+  }
+  recorder_->add(std::move(set));
 }
 
 }  // namespace octocap

@@ -22,6 +22,7 @@ namespace octocap {
 
 class Feed;
 class KeypointReceiver;
+class LiveRecorder;
 struct CapturedFrame;
 
 struct LiveConfig {
@@ -49,7 +50,9 @@ struct LiveStats {
   double publish_ms = 0;          // sinks and the output mailbox
   double latency_p50_ms = 0;      // grab of the oldest picture -> frame available
   double latency_p99_ms = 0;
-  std::string last_error;         // a solve that failed (the engine goes on)
+  uint64_t sets_recorded = 0;     // sets written by the recording (set_recording)
+  uint64_t recording_pictures_dropped = 0;  // recorded sets whose pictures were left out (the disk was behind)
+  std::string last_error;         // a solve that failed, or the recording's write error (the engine goes on)
 };
 
 class LiveEngine {
@@ -63,6 +66,9 @@ class LiveEngine {
   void set_detector(const DetectorConfig& config);  // before start()
   // Per camera, how late it delivers (µs, subtracted from its grab times before matching); before start().
   void set_latency_offsets(const std::vector<int64_t>& offsets_us);
+  // Records every frame set into `directory` from the next start() (see live_recorder.h); empty: no recording.
+  // Before start().
+  void set_recording(const std::string& directory);
   // Opens every camera (Error(io) naming one that cannot be opened; the others are closed again), then runs.
   void start();
   void stop();  // idempotent
@@ -81,6 +87,7 @@ class LiveEngine {
  private:
   void run();
   void solve_set(const std::vector<CapturedFrame>& frames, const std::vector<bool>& present, int64_t set_time_us);
+  void record(const std::vector<CapturedFrame>& frames, const std::vector<bool>& present, int64_t set_time_us);
   // The sync tolerance and wait now: the configured ones, else from the slowest camera's measured rate (a camera
   // that delivers slower than it says, a host that cannot decode every picture, still makes whole sets).
   void update_sync_window();
@@ -90,6 +97,8 @@ class LiveEngine {
   std::unique_ptr<Session> session_;
   std::shared_ptr<KeypointReceiver> receiver_;  // only with remote cameras
   std::vector<std::unique_ptr<Feed>> feeds_;
+  std::string record_dir_;
+  std::unique_ptr<LiveRecorder> recorder_;  // from start() to stop(), when recording
   FrameSetOptions sync_;
   std::thread thread_;
   std::atomic<bool> running_{false}, stop_{false};

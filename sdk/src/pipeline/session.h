@@ -77,6 +77,8 @@ class Session {
   void set_detector(const DetectorConfig& config);
   // What the detector found in each view during the last solve_images(), view pixels.
   const std::vector<std::vector<DetectedPerson>>& detections() const { return detections_; }
+  // The 2D people the last solve_images() solved, per view in calibration pixels (what solve() would take again).
+  const std::vector<std::vector<Person2D>>& image_people() const { return image_people_; }
   const Detector* detector() const { return detector_.get(); }
   void reset();
   // Blocks until every published frame has been handed to DDS (no-op without publishing).
@@ -119,6 +121,7 @@ class Session {
 
   std::unique_ptr<Detector> detector_;
   std::vector<std::vector<DetectedPerson>> detections_;
+  std::vector<std::vector<Person2D>> image_people_;
   FrameResult frame_;
   std::vector<Eigen::Vector3d> raw_previous_;  // unfiltered, for person tracking; empty when unknown
   std::vector<OneEuroFilter3> filters_;

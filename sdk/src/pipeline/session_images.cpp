@@ -90,14 +90,14 @@ bool Session::solve_images(const std::vector<ImageView>& images, int64_t timesta
       detections_[v].push_back(std::move(d));
     }
   }
-  std::vector<std::vector<Person2D>> people(detections_.size());
+  image_people_.assign(detections_.size(), {});
   for (size_t v = 0; v < detections_.size(); ++v)
     for (const DetectedPerson& d : detections_[v]) {
       Person2D p = d.keypoints;
       for (Keypoint2D& k : p) k.x = (k.x + 0.5) * scale[v].x() - 0.5, k.y = (k.y + 0.5) * scale[v].y() - 0.5;
-      people[v].push_back(std::move(p));
+      image_people_[v].push_back(std::move(p));
     }
-  return solve(people, timestamp_us);
+  return solve(image_people_, timestamp_us);
 }
 
 }  // namespace octocap
