@@ -5,7 +5,13 @@
 //            544x960 sub-streams for 1, 2, 4 and 8 cameras (8: the four views twice), and the 1088x1920 main streams.
 // Per row: solved frame sets per second, sets without every camera, per-stage means (image collection = waiting for
 // the set, 2D detection, 3D + rig), grab-to-frame latency p50 / p99, pictures dropped (bounded mailboxes at work).
+// `--soak SECONDS`: instead, four RTSP sub-streams for that long, a line every 30 s (rate, latency, whole sets, the
+// process's resident memory): latency and memory stay flat when every hand-over is bounded.
+// `--rtsp`: only the RTSP rows.
 #include <unistd.h>
+
+#include <cstring>
+#include <fstream>
 
 #include <chrono>
 #include <cstdio>
@@ -55,15 +61,109 @@ void row(const char* what, const octocap::Calibration& calib, const std::vector<
               grabbed ? 100.0 * static_cast<double>(dropped) / static_cast<double>(grabbed) : 0.0);
 }
 
+double resident_mb() {
+  std::ifstream statm("/proc/self/statm");
+  long pages = 0, resident = 0;
+  statm >> pages >> resident;
+  return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / 1e6;
+}
+
+// An RTSP server on loopback with a mount per view, and `count` cameras on it (the four views in turn).
+struct RtspRig {
+  std::unique_ptr<testing::ChildProcess> server;
+  std::unique_ptr<octocap::Calibration> calib;
+  std::vector<std::string> urls;
+};
+
+RtspRig rtsp_rig(const octocap::Calibration& lab, int count, const std::string& suffix) {
+  RtspRig rig;
+  const std::string streams = kRoot + "/.cache/rtsp-streams/";
+  std::vector<std::string> args = {"/usr/bin/python3", kRoot + "/tests/support/rtsp_server.py", "--port", "30600"};
+  for (int c = 1; c <= 4; ++c)
+    args.push_back("/cam" + std::to_string(c) + "=" + streams + "cam0" + std::to_string(c) + suffix + ".h264");
+  rig.server = std::make_unique<testing::ChildProcess>(args);
+  std::this_thread::sleep_for(std::chrono::milliseconds(800));
+  std::vector<octocap_camera_t> cams;
+  for (int c = 0; c < count; ++c) {
+    cams.push_back(lab.camera(static_cast<uint32_t>(c % 4)));
+    std::snprintf(cams.back().name, sizeof cams.back().name, "cam_%02d", c + 1);
+    rig.urls.push_back("rtsp://127.0.0.1:30600/cam" + std::to_string(c % 4 + 1));
+  }
+  octocap_calibration_t* sub = nullptr;
+  octocap::check(octocap_calibration_create(cams.data(), static_cast<uint32_t>(cams.size()), &sub), "cameras");
+  rig.calib = std::make_unique<octocap::Calibration>(sub);
+  return rig;
+}
+
+int soak(const octocap::Calibration& lab, double seconds) {
+  RtspRig rig = rtsp_rig(lab, 4, "_960");
+  octocap_live_config_t cfg;
+  octocap_live_config_init(&cfg);
+  octocap_session_config_t s;
+  octocap_session_config_init(&s);
+  s.layout = OCTOCAP_LAYOUT_COCO_17;
+  octocap::Live live(cfg, s, *rig.calib, rig.urls);
+  octocap_detector_config_t d;
+  octocap_detector_config_init(&d);
+  std::snprintf(d.model, sizeof d.model, "%s", "movenet-lightning");
+  live.set_detector(d);
+  live.start();
+  std::printf("# octocap live, 4 RTSP cameras (544x960 @ 60, loopback), movenet-lightning, %.0f s\n\n", seconds);
+  std::printf("| time s | sets/s | whole sets | latency p50 / p99 ms | resident MB | reconnects |\n|---|---|---|---|---|---|\n");
+  const auto start = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  octocap_live_stats_t before = live.stats();
+  double window_start = 0;
+  while (elapsed() < seconds) {
+    live.take(500);
+    if (elapsed() - window_start < 30 && elapsed() < seconds) continue;
+    const octocap_live_stats_t now = live.stats();
+    const double span = elapsed() - window_start;
+    const double sets = static_cast<double>(now.frame_sets - before.frame_sets);
+    const double whole = sets - static_cast<double>(now.sets_incomplete - before.sets_incomplete);
+    uint64_t reconnects = 0;
+    for (uint32_t c = 0; c < now.camera_count; ++c) reconnects += live.camera(c).reconnects;
+    std::printf("| %6.0f | %5.1f | %3.0f %% | %5.0f / %5.0f | %6.0f | %llu |\n", elapsed(), sets / span,
+                sets > 0 ? 100.0 * whole / sets : 0.0, now.latency_p50_ms, now.latency_p99_ms, resident_mb(),
+                static_cast<unsigned long long>(reconnects));
+    std::fflush(stdout);
+    before = now;
+    window_start = elapsed();
+  }
+  live.stop();
+  return 0;
+}
+
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
   const octocap::Calibration lab = octocap::Calibration::load(kLab);
+  if (argc == 3 && std::strcmp(argv[1], "--soak") == 0) return soak(lab, std::atof(argv[2]));
+  const bool rtsp_only = argc == 2 && std::strcmp(argv[1], "--rtsp") == 0;
+  if (argc > 1 && !rtsp_only) {
+    std::fprintf(stderr, "usage: octocap_bench_live [--rtsp | --soak SECONDS]\n");
+    return 2;
+  }
   std::printf("# octocap live engine (this machine, default threads; the detector decides the rate)\n\n");
   std::printf("| cameras | model | sets/s | incomplete | collect ms | detect ms | 3D+rig ms | latency p50 / p99 ms | dropped |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|\n");
   std::vector<std::string> files;
   for (int c = 1; c <= 4; ++c) files.push_back(kVideos + "cam0" + std::to_string(c) + ".mp4");
+  auto rtsp_row = [&](const char* what, int count, const std::string& suffix) {
+    RtspRig rig = rtsp_rig(lab, count, suffix);
+    row(what, *rig.calib, rig.urls, "movenet-lightning", 10);
+  };
+  auto rtsp_rows = [&] {
+    rtsp_row("1 RTSP camera, 544x960 @ 60", 1, "_960");
+    rtsp_row("2 RTSP cameras, 544x960 @ 60", 2, "_960");
+    rtsp_row("4 RTSP cameras, 544x960 @ 60", 4, "_960");
+    rtsp_row("8 RTSP cameras, 544x960 @ 60", 8, "_960");
+    rtsp_row("4 RTSP cameras, 1088x1920 @ 60", 4, "");
+  };
+  if (rtsp_only) {
+    rtsp_rows();
+    return 0;
+  }
   for (const char* model : {"movenet-lightning", "movenet-thunder"})
     row("4 video files, 1088x1920 @ 60", lab, files, model, 10);
 
@@ -100,29 +200,6 @@ int main() {
   servers.clear();
   for (const std::string& avi : avis) std::remove(avi.c_str());
 
-  // IP cameras over RTSP: one server, a mount per view (shared: two clients of a mount see one camera).
-  const std::string streams = kRoot + "/.cache/rtsp-streams/";
-  auto rtsp_row = [&](const char* what, int count, const std::string& suffix) {
-    std::vector<std::string> args = {"/usr/bin/python3", kRoot + "/tests/support/rtsp_server.py", "--port", "30600"};
-    for (int c = 1; c <= 4; ++c)
-      args.push_back("/cam" + std::to_string(c) + "=" + streams + "cam0" + std::to_string(c) + suffix + ".h264");
-    testing::ChildProcess server(args);
-    std::this_thread::sleep_for(std::chrono::milliseconds(800));
-    std::vector<octocap_camera_t> cams;
-    std::vector<std::string> rtsp;
-    for (int c = 0; c < count; ++c) {
-      cams.push_back(lab.camera(static_cast<uint32_t>(c % 4)));
-      std::snprintf(cams.back().name, sizeof cams.back().name, "cam_%02d", c + 1);
-      rtsp.push_back("rtsp://127.0.0.1:30600/cam" + std::to_string(c % 4 + 1));
-    }
-    octocap_calibration_t* sub = nullptr;
-    octocap::check(octocap_calibration_create(cams.data(), static_cast<uint32_t>(cams.size()), &sub), "cameras");
-    row(what, octocap::Calibration(sub), rtsp, "movenet-lightning", 10);
-  };
-  rtsp_row("1 RTSP camera, 544x960 @ 60", 1, "_960");
-  rtsp_row("2 RTSP cameras, 544x960 @ 60", 2, "_960");
-  rtsp_row("4 RTSP cameras, 544x960 @ 60", 4, "_960");
-  rtsp_row("8 RTSP cameras, 544x960 @ 60", 8, "_960");
-  rtsp_row("4 RTSP cameras, 1088x1920 @ 60", 4, "");
+  rtsp_rows();
   return 0;
 }

@@ -1,24 +1,21 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (fuzz/) with clang under ASan + UBSan, in the smallest configuration (no DDS, no
-# ONNX Runtime, no viewer): its test suite runs first, then every target for a bounded time from its committed
-# corpus (fuzz/corpus/<target>, never modified here). A crash, leak, UB report or timeout fails the script and
-# leaves the input in build-fuzz/crashes/. Usage: scripts/fuzz.sh [SECONDS_PER_TARGET] (default 20)
+# Runs every libFuzzer target (fuzz/) for a bounded time from its committed corpus (fuzz/corpus/<target>, never
+# modified here), in the sanitizer build (clang, ASan + UBSan; scripts/sanitize.sh makes it, with the test suite).
+# A crash, leak, UB report or timeout fails the script and leaves the input in <build>/crashes/.
+# Usage: scripts/fuzz.sh [SECONDS_PER_TARGET] (default 20)
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
 SECONDS_PER_TARGET="${1:-20}"
-DIR="${OCTOCAP_FUZZ_BUILD_DIR:-$ROOT/build-fuzz}"
-CC_BIN="$(command -v clang-14 || command -v clang)"
-CXX_BIN="$(command -v clang++-14 || command -v clang++)"
-if [ ! -f "$DIR/build.ninja" ]; then
-  CC="$CC_BIN" CXX="$CXX_BIN" cmake -S "$ROOT" -B "$DIR" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1" -DOCTOCAP_FUZZ=ON \
-    -DOCTOCAP_WITH_DDS=OFF -DOCTOCAP_WITH_ONNX=OFF -DOCTOCAP_WITH_VIEWER=OFF -DOCTOCAP_BENCH=OFF >/dev/null
+DIR="${OCTOCAP_SANITIZE_BUILD_DIR:-$ROOT/build-asan}"
+if ! grep -q "OCTOCAP_FUZZ:BOOL=ON" "$DIR/CMakeCache.txt" 2>/dev/null; then
+  CC="$(command -v clang-14 || command -v clang)" CXX="$(command -v clang++-14 || command -v clang++)" \
+    cmake -S "$ROOT" -B "$DIR" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
+    -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1" -DOCTOCAP_FUZZ=ON -DOCTOCAP_BENCH=OFF >/dev/null
 fi
-cmake --build "$DIR" -j "$JOBS"
-echo "== tests of the minimal configuration (no DDS, no ONNX Runtime), clang + ASan + UBSan"
-(cd "$DIR" && ctest --output-on-failure -j "$JOBS")
+targets=(calibration openpose_json motion model_card board_spec solve)
+cmake --build "$DIR" -j "$JOBS" --target "${targets[@]/#/fuzz_}"
 mkdir -p "$DIR/crashes"
-for target in calibration openpose_json motion model_card board_spec solve; do
+for target in "${targets[@]}"; do
   work="$(mktemp -d)"
   echo "== fuzz_$target for ${SECONDS_PER_TARGET} s"
   "$DIR/fuzz/fuzz_$target" -max_total_time="$SECONDS_PER_TARGET" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \

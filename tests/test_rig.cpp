@@ -1,5 +1,6 @@
 // Bone rotations: rebuild the skeleton from quaternions, no spin, engine frames.
 #include <catch2/catch_test_macros.hpp>
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -34,6 +35,11 @@ SkeletonJoints tpose() {
 
 double angle_between(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
   return a.angularDistance(b);
+}
+
+// The head bone's local rotation of one frame solved with `cues`.
+Eigen::Quaterniond solve_bones_with(const SkeletonJoints& j, const BodyCues& cues) {
+  return BoneSolver{}.solve(j, cues)[kBoneHead].local;
 }
 
 }  // namespace
@@ -99,6 +105,63 @@ TEST_CASE("a forearm circling near its rest axis does not spin (anti-spin), the 
   REQUIRE(worst_step_excess < 1e-4);  // radians; acos() near 0 is not more precise than this
   // Without the correction the same motion rolls the bone all the way round.
   REQUIRE(naive_roll_max - naive_roll_min > 1.5 * M_PI);
+}
+
+TEST_CASE("an elbow that straightens and bends again keeps its roll: no flip near straight", "[rig]") {
+  // The arm bends in one plane (forearm toward the front), straightens, wobbles around straight (a degree of noise,
+  // any direction: no plane to trust) and bends again.
+  BoneSolver solver;
+  SkeletonJoints j = tpose();
+  std::mt19937 rng(5);
+  std::normal_distribution<double> wobble(0, 1.0 * M_PI / 180);
+  Eigen::Quaterniond prev;
+  double worst_step = 0, bent_roll_start = 0, bent_roll_end = 0;
+  const int frames = 240;
+  for (int i = 0; i < frames; ++i) {
+    const double bend = (60 * M_PI / 180) * std::clamp((std::abs(i - frames / 2) - 40) / 60.0, 0.0, 1.0);
+    Eigen::Vector3d f(std::cos(bend), 0, std::sin(bend));  // left forearm: +X, bending toward +Z
+    f = (Eigen::AngleAxisd(wobble(rng), Eigen::Vector3d::UnitY()) * Eigen::AngleAxisd(wobble(rng), Eigen::Vector3d::UnitZ())) * f;
+    j[kLHand] = j[kLElbow] + 0.25 * f;
+    const SkeletonPose pose = solver.solve(j);
+    const BonePose& upper = pose[kBoneLUpperArm];
+    REQUIRE(upper.valid);
+    if (i > 0) worst_step = std::max(worst_step, angle_between(prev, upper.global));
+    prev = upper.global;
+    const double roll = twist_angle(upper.local, tpose_directions()[kBoneLUpperArm]);
+    if (i == 0) bent_roll_start = roll;
+    if (i == frames - 1) bent_roll_end = roll;
+  }
+  INFO("largest step of the upper arm between frames " << worst_step * 180 / M_PI << " deg, roll bent "
+                                                      << bent_roll_start * 180 / M_PI << " then " << bent_roll_end * 180 / M_PI);
+  // Never a flip (half a turn), also while straight and wobbling: what noise moves is the bent plane's roll, by
+  // about the wobble over the bend's sine.
+  CHECK(worst_step < 20 * M_PI / 180);
+  CHECK(std::abs(bent_roll_start) < 5 * M_PI / 180);      // bent in the template's hinge plane: no roll needed
+  CHECK(std::abs(bent_roll_end - bent_roll_start) < 5 * M_PI / 180);
+  // Bent in another plane (forearm toward the ceiling): the upper arm rolls a quarter turn so the elbow stays a hinge.
+  j[kLHand] = j[kLElbow] + 0.25 * Eigen::Vector3d(std::cos(1.0), std::sin(1.0), 0);
+  const SkeletonPose up = solve_bones(j);
+  CHECK(std::abs(std::abs(twist_angle(up[kBoneLUpperArm].local, tpose_directions()[kBoneLUpperArm])) - M_PI / 2) < 1e-6);
+  // The forearm then turns about the hinge alone: no roll of its own.
+  CHECK(std::abs(twist_angle(up[kBoneLLowerArm].local, tpose_directions()[kBoneLLowerArm])) < 1e-9);
+}
+
+TEST_CASE("the head turns with the face: ears, else eyes, else the nose; held when the face is gone", "[rig]") {
+  const SkeletonJoints j = tpose();
+  const Eigen::Vector3d up = tpose_directions()[kBoneHead];
+  const Eigen::AngleAxisd turn(40 * M_PI / 180, up);  // a look to the left
+  BodyCues ears;
+  ears.head_across = turn * Eigen::Vector3d(0.15, 0, 0);
+  BoneSolver solver;
+  CHECK(std::abs(twist_angle(solver.solve(j, ears)[kBoneHead].local, up) - turn.angle()) < 1e-9);
+  BodyCues nose;
+  nose.head_forward = turn * Eigen::Vector3d(0, 0, 0.1);
+  CHECK(std::abs(twist_angle(solve_bones_with(j, nose), up) - turn.angle()) < 1e-9);
+  // The face not seen for a while: the turn is held, drifting back only slowly, never snapping.
+  double held = 0;
+  for (int i = 0; i < 10; ++i) held = twist_angle(solver.solve(j)[kBoneHead].local, up);
+  CHECK(held > 0.7 * turn.angle());
+  CHECK(held < turn.angle());
 }
 
 TEST_CASE("a missing joint invalidates its bone and the bones below it", "[rig]") {

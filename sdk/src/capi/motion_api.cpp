@@ -39,7 +39,8 @@ octocap_result_t octocap_motion_open(const char* path, octocap_motion_t** out) {
     auto motion = load_skeleton_motion(path);
     std::vector<SkeletonPose> bones;
     bones.reserve(motion.frames.size());
-    for (const SkeletonJoints& j : motion.frames) bones.push_back(solve_bones(j));
+    BoneSolver solver;  // rolls held across the take's frames
+    for (const SkeletonJoints& j : motion.frames) bones.push_back(solver.solve(j));
     *out = capi::make_handle<octocap_motion_t>(std::move(motion), std::move(bones), next_definition_counter());
   });
 }

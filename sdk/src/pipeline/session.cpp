@@ -62,6 +62,13 @@ Keypoint2D clean(const Keypoint2D& k) {
 Session::Session(const SessionConfig& config, Calibration calib)
     : config_(config), calib_(std::move(calib)), layout_(&layout(config.layout)) {
   validate(config_);
+  auto keypoint = [&](const char* name) {
+    for (size_t k = 0; k < layout_->keypoints.size(); ++k)
+      if (std::string(layout_->keypoints[k]) == name) return static_cast<int>(k);
+    return -1;
+  };
+  nose_ = keypoint("Nose"), l_eye_ = keypoint("LEye"), r_eye_ = keypoint("REye");
+  l_ear_ = keypoint("LEar"), r_ear_ = keypoint("REar");
   const int cams = static_cast<int>(calib_.size());
   if (cams < 2) throw Error(Errc::not_enough_views, "a session needs at least 2 cameras, the calibration has " +
                                                         std::to_string(cams));
@@ -123,6 +130,7 @@ uint32_t Session::stream_readers() const {
 
 void Session::reset() {
   for (auto& f : filters_) f.reset();
+  bone_solver_.reset();
   raw_previous_.clear();
   last_timestamp_us_ = 0;
   has_timestamp_ = false;
@@ -291,7 +299,15 @@ void Session::derive_skeleton() {
     }
     rig_joints[j] = z_up_ ? zup_to_yup(frame_.joints[j].position) : frame_.joints[j].position;
   }
-  frame_.bones = solve_bones(rig_joints);
+  auto rig_point = [&](int k) -> Eigen::Vector3d {
+    if (k < 0 || !frame_.keypoints[k].valid) return Eigen::Vector3d::Constant(std::nan(""));
+    return z_up_ ? zup_to_yup(frame_.keypoints[k].position) : frame_.keypoints[k].position;
+  };
+  BodyCues cues;
+  cues.head_across = rig_point(l_ear_) - rig_point(r_ear_);
+  if (!cues.head_across.allFinite()) cues.head_across = rig_point(l_eye_) - rig_point(r_eye_);
+  cues.head_forward = rig_point(nose_) - rig_joints[kHead];
+  frame_.bones = bone_solver_.solve(rig_joints, cues);
 }
 
 }  // namespace octocap

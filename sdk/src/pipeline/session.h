@@ -125,6 +125,9 @@ class Session {
   FrameResult frame_;
   std::vector<Eigen::Vector3d> raw_previous_;  // unfiltered, for person tracking; empty when unknown
   std::vector<OneEuroFilter3> filters_;
+  BoneSolver bone_solver_;  // holds rolls across frames
+  // The layout's face keypoints (-1 where it has none), for the head's turn.
+  int nose_ = -1, l_eye_ = -1, r_eye_ = -1, l_ear_ = -1, r_ear_ = -1;
   int64_t last_timestamp_us_ = 0;
   bool has_timestamp_ = false;
   bool solved_any_ = false;

@@ -50,7 +50,11 @@ VmcSender::VmcSender(const std::string& host, uint16_t port) : impl_(std::make_u
 VmcSender::~VmcSender() { lo_address_free(impl_->address); }
 
 void VmcSender::send(const FrameResult& frame) {
-  lo_bundle bundle = lo_bundle_new(LO_TT_IMMEDIATE);
+  // LO_TT_IMMEDIATE's value, without its C99 compound literal (not C++).
+  lo_timetag immediate;
+  immediate.sec = 0;
+  immediate.frac = 1;
+  lo_bundle bundle = lo_bundle_new(immediate);
   const SkeletonPose& pose = frame.bones;
   const bool ok = pose[kBoneRoot].valid;
   lo_message status = lo_message_new();
