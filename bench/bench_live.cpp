@@ -2,7 +2,7 @@
 //   files:   Pose2Sim's 4 real videos (1088x1920, 60 fps) played as cameras at their own rate;
 //   network: the same views as MJPEG over HTTP on loopback (ffmpeg servers, 272x480, 60 fps), 2 and 4 cameras;
 //   rtsp:    the same views as H.264 IP cameras (GStreamer's RTSP server on loopback, tests/support/rtsp_server.py),
-//            544x960 sub-streams for 1, 2, 4 and 8 cameras (8: the four views twice), and the 1088x1920 main streams.
+//            544x960 sub-streams for 2, 4 and 8 cameras (8: the four views twice), and the 1088x1920 main streams.
 // Per row: solved frame sets per second, sets without every camera, per-stage means (image collection = waiting for
 // the set, 2D detection, 3D + rig), grab-to-frame latency p50 / p99, pictures dropped (bounded mailboxes at work).
 // `--soak SECONDS`: instead, four RTSP sub-streams for that long, a line every 30 s (rate, latency, whole sets, the
@@ -154,7 +154,6 @@ int main(int argc, char** argv) {
     row(what, *rig.calib, rig.urls, "movenet-lightning", 10);
   };
   auto rtsp_rows = [&] {
-    rtsp_row("1 RTSP camera, 544x960 @ 60", 1, "_960");
     rtsp_row("2 RTSP cameras, 544x960 @ 60", 2, "_960");
     rtsp_row("4 RTSP cameras, 544x960 @ 60", 4, "_960");
     rtsp_row("8 RTSP cameras, 544x960 @ 60", 8, "_960");

@@ -10,7 +10,7 @@ DIR="${OCTOCAP_SANITIZE_BUILD_DIR:-$ROOT/build-asan}"
 if ! grep -q "OCTOCAP_FUZZ:BOOL=ON" "$DIR/CMakeCache.txt" 2>/dev/null; then
   CC="$(command -v clang-14 || command -v clang)" CXX="$(command -v clang++-14 || command -v clang++)" \
     cmake -S "$ROOT" -B "$DIR" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
-    -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1" -DOCTOCAP_FUZZ=ON -DOCTOCAP_BENCH=OFF >/dev/null
+    -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1" -DOCTOCAP_FUZZ=ON -DOCTOCAP_BENCH=OFF -DOCTOCAP_WITH_VIEWER=OFF >/dev/null
 fi
 targets=(calibration openpose_json motion model_card board_spec solve)
 cmake --build "$DIR" -j "$JOBS" --target "${targets[@]/#/fuzz_}"

@@ -4,10 +4,20 @@
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
 ensure_deps
-bash "$ROOT/scripts/fetch-real-data.sh"
-bash "$ROOT/scripts/fetch-real-videos.sh"
-bash "$ROOT/scripts/fetch-models.sh"
-configure_and_build "$BUILD_DIR" "$@"
+# The test data and models are fetched while the code builds: neither needs the other, and fetching is mostly waiting
+# on downloads. Their output comes after the build's.
+fetch_log="$(mktemp)"
+( bash "$ROOT/scripts/fetch-real-data.sh" && bash "$ROOT/scripts/fetch-real-videos.sh" &&
+  bash "$ROOT/scripts/fetch-models.sh" ) >"$fetch_log" 2>&1 &
+fetch=$!
+build_status=0
+configure_and_build "$BUILD_DIR" "$@" || build_status=$?
+fetch_status=0
+wait "$fetch" || fetch_status=$?
+cat "$fetch_log"
+rm -f "$fetch_log"
+[ "$build_status" = 0 ] || { echo "the build failed"; exit "$build_status"; }
+[ "$fetch_status" = 0 ] || { echo "fetching the test data or models failed (above)"; exit "$fetch_status"; }
 status=0
 # OCTOCAP_CTEST_EXCLUDE: a regex of test names this pass leaves out (the sanitizer pass of .ci/run says why).
 (cd "$BUILD_DIR" && ctest --output-on-failure -j "$JOBS" ${OCTOCAP_CTEST_EXCLUDE:+-E "$OCTOCAP_CTEST_EXCLUDE"}) || status=$?
