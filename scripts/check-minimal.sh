@@ -5,6 +5,8 @@
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
 DIR="${OCTOCAP_MINIMAL_BUILD_DIR:-$ROOT/build-minimal}"
+bash "$ROOT/scripts/fetch-real-data.sh"    # the real take, for the images check below (cached)
+bash "$ROOT/scripts/fetch-real-videos.sh"
 if [ ! -f "$DIR/build.ninja" ]; then
   cmake -S "$ROOT" -B "$DIR" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-O0 -DCMAKE_C_FLAGS_DEBUG=-O0 \
     -DOCTOCAP_WITH_DDS=OFF -DOCTOCAP_WITH_ONNX=OFF -DOCTOCAP_WITH_VIEWER=OFF -DOCTOCAP_TESTS=OFF \
