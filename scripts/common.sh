@@ -20,6 +20,17 @@ ensure_deps() {
   fi
 }
 
+# The sanitizer build (scripts/sanitize.sh, scripts/fuzz.sh): clang, ASan + UBSan with the libFuzzer targets, -O1 -g1
+# (ASan's recommended optimisation, line tables for the reports), no benchmarks, no viewer sample.
+SANITIZE_BUILD_DIR="${OCTOCAP_SANITIZE_BUILD_DIR:-$ROOT/build-asan}"
+SANITIZE_CMAKE_ARGS=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1"
+                     -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1" -DOCTOCAP_FUZZ=ON -DOCTOCAP_BENCH=OFF -DOCTOCAP_WITH_VIEWER=OFF)
+use_clang() {
+  CC="$(command -v clang-14 || command -v clang)"
+  CXX="$(command -v clang++-14 || command -v clang++)"
+  export CC CXX
+}
+
 configure_and_build() {
   local dir="$1"; shift
   if [ ! -f "$dir/build.ninja" ]; then

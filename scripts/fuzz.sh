@@ -6,11 +6,10 @@
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
 SECONDS_PER_TARGET="${1:-20}"
-DIR="${OCTOCAP_SANITIZE_BUILD_DIR:-$ROOT/build-asan}"
+DIR="$SANITIZE_BUILD_DIR"
 if ! grep -q "OCTOCAP_FUZZ:BOOL=ON" "$DIR/CMakeCache.txt" 2>/dev/null; then
-  CC="$(command -v clang-14 || command -v clang)" CXX="$(command -v clang++-14 || command -v clang++)" \
-    cmake -S "$ROOT" -B "$DIR" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
-    -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1" -DOCTOCAP_FUZZ=ON -DOCTOCAP_BENCH=OFF -DOCTOCAP_WITH_VIEWER=OFF >/dev/null
+  use_clang
+  cmake -S "$ROOT" -B "$DIR" -G Ninja "${SANITIZE_CMAKE_ARGS[@]}" >/dev/null
 fi
 targets=(calibration openpose_json motion model_card board_spec solve)
 cmake --build "$DIR" -j "$JOBS" --target "${targets[@]/#/fuzz_}"

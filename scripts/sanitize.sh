@@ -6,12 +6,10 @@
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
 FUZZ_SECONDS="${1:-15}"
-export OCTOCAP_SANITIZE_BUILD_DIR="${OCTOCAP_SANITIZE_BUILD_DIR:-$ROOT/build-asan}"
-CC="$(command -v clang-14 || command -v clang)"
-CXX="$(command -v clang++-14 || command -v clang++)"
-export CC CXX
-# -O1 -g1: ASan's recommended optimisation and line tables for the reports. The SDK, its command-line tools and the
-# DDS sample; not the viewer sample (assimp, OpenGL): a fifth of the instrumented build, and what CI can spend.
+export OCTOCAP_SANITIZE_BUILD_DIR="$SANITIZE_BUILD_DIR"
+use_clang
+# The configuration is common.sh's SANITIZE_CMAKE_ARGS: the SDK, its command-line tools and the DDS sample; not the
+# viewer sample (assimp, OpenGL): a fifth of the instrumented build, and what CI can spend.
 # System libraries leak a little on their own: .ci/lsan.supp names them (nothing of octocap's).
 # Two tests judge the accuracy of the live pipeline fed in real time by real servers (four RTSP cameras at 60 fps, and
 # capture nodes on them); instrumented, the detector runs at a third of its speed, decoding falls behind and sets
@@ -24,7 +22,5 @@ export CC CXX
 # and detection run instrumented in the tests of each).
 OCTOCAP_CTEST_EXCLUDE="four RTSP cameras on loopback|capture nodes: two node processes|extrinsics from a person: cameras recovered|octocap-calibrate extrinsics recovers the sample|markerless end to end: the lab's cameras" \
 LSAN_OPTIONS="suppressions=$ROOT/.ci/lsan.supp:print_suppressions=0" OCTOCAP_SKIP_CSHARP=1 \
-  OCTOCAP_BUILD_DIR="$OCTOCAP_SANITIZE_BUILD_DIR" bash "$ROOT/scripts/test.sh" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1" -DOCTOCAP_FUZZ=ON -DOCTOCAP_BENCH=OFF \
-  -DOCTOCAP_WITH_VIEWER=OFF
+  OCTOCAP_BUILD_DIR="$SANITIZE_BUILD_DIR" bash "$ROOT/scripts/test.sh" "${SANITIZE_CMAKE_ARGS[@]}"
 bash "$ROOT/scripts/fuzz.sh" "$FUZZ_SECONDS"

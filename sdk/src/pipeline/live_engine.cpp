@@ -138,13 +138,16 @@ void LiveEngine::stop() {
   if (recorder_) recorder_->close();  // everything queued is on disk when stop() returns
   const std::lock_guard<std::mutex> lock(mutex_);
   stats_.running = false;
-  if (recorder_) {
-    const RecorderStats r = recorder_->stats();
-    stats_.sets_recorded = r.sets;
-    stats_.recording_pictures_dropped = r.pictures_dropped;
-    if (!recorder_->error().empty()) stats_.last_error = recorder_->error();
-    recorder_.reset();
-  }
+  add_recording_stats(stats_);  // kept after the recorder is gone
+  recorder_.reset();
+}
+
+void LiveEngine::add_recording_stats(LiveStats& s) const {
+  if (!recorder_) return;
+  const RecorderStats r = recorder_->stats();
+  s.sets_recorded = r.sets;
+  s.recording_pictures_dropped = r.pictures_dropped;
+  if (!recorder_->error().empty()) s.last_error = recorder_->error();
 }
 
 std::shared_ptr<const FrameResult> LiveEngine::latest() const {
@@ -164,12 +167,7 @@ std::shared_ptr<const FrameResult> LiveEngine::take(int timeout_ms) {
 LiveStats LiveEngine::stats() const {
   const std::lock_guard<std::mutex> lock(mutex_);
   LiveStats s = stats_;
-  if (recorder_) {
-    const RecorderStats r = recorder_->stats();
-    s.sets_recorded = r.sets;
-    s.recording_pictures_dropped = r.pictures_dropped;
-    if (!recorder_->error().empty()) s.last_error = recorder_->error();
-  }
+  add_recording_stats(s);
   std::vector<double> latencies = latencies_ms_;
   s.latency_p50_ms = quantile_in_place(latencies, 0.5, 0);
   s.latency_p99_ms = quantile_in_place(latencies, 0.99, 0);

@@ -88,6 +88,7 @@ class LiveEngine {
   void run();
   void solve_set(const std::vector<CapturedFrame>& frames, const std::vector<bool>& present, int64_t set_time_us);
   void record(const std::vector<CapturedFrame>& frames, const std::vector<bool>& present, int64_t set_time_us);
+  void add_recording_stats(LiveStats& s) const;  // the recording's figures into `s`, while there is a recording
   // The sync tolerance and wait now: the configured ones, else from the slowest camera's measured rate (a camera
   // that delivers slower than it says, a host that cannot decode every picture, still makes whole sets).
   void update_sync_window();
