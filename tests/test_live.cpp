@@ -196,7 +196,7 @@ TEST_CASE("live: a recorded take solves again offline exactly as it solved live"
   const octocap::Calibration calib = octocap::Calibration::load(kDemo + "/calibration/Calib_qualisys.toml");
   octocap_live_config_t cfg;
   octocap_live_config_init(&cfg);
-  cfg.picture_rate_hz = 10;
+  cfg.picture_rate_hz = 5;  // slow enough that a loaded CI machine still detects most sets in all four views
   const std::string take = dir.file("take");
   octocap::Live live(cfg, coco_session(), calib, folders);  // no temporal filter: each frame depends on its set only
   live.set_detector(lightning());
@@ -258,7 +258,9 @@ TEST_CASE("live: a recorded take solves again offline exactly as it solved live"
   }
   INFO("compared " << compared << " frames, " << with_person << " with a person, worst difference " << worst_mm << " mm");
   CHECK(compared >= 0.8 * static_cast<double>(stats.frame_sets));
-  CHECK(with_person >= 0.8 * static_cast<double>(compared));
+  // Some sets hold a person: the comparison is not between empty frames only. (How many depends on the machine's
+  // load: a set whose other views were still being detected holds one view and solves nobody, live and offline.)
+  CHECK(with_person >= 3);
   CHECK(worst_mm < 0.01);  // the JSON keeps 10 significant digits
 
   // A folder that already holds a take is refused at start, before any camera opens.
