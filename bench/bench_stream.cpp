@@ -26,17 +26,20 @@ int64_t now_us() {
 FrameResult sample_frame() {
   FrameResult f;
   f.layout = LayoutId::body25;
-  f.keypoints.resize(25);
-  for (auto& k : f.keypoints) {
+  PersonResult p;
+  p.keypoints.resize(25);
+  for (auto& k : p.keypoints) {
     k.valid = true;
     k.position = Eigen::Vector3d(0.1, 1.2, 0.3);
     k.views_used = 4;
   }
-  for (auto& j : f.joints) j = f.keypoints[0];
-  for (auto& b : f.bones) {
+  for (auto& j : p.joints) j = p.keypoints[0];
+  for (auto& b : p.bones) {
     b.valid = true;
     b.length = 0.3;
   }
+  f.blank.keypoints.resize(25);
+  f.people.push_back(p);
   return f;
 }
 

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# Real multi-camera videos for the image-to-3D tests: Pose2Sim's Demo_SinglePerson (BSD-3-Clause), 4 cameras,
-# 1088x1920, 100 frames, from the pose2sim 0.10.49 wheel on PyPI. Its Calib.qca.txt is the same Qualisys
+# Real multi-camera videos for the image-to-3D tests: Pose2Sim's Demo_SinglePerson and Demo_MultiPerson
+# (BSD-3-Clause), 4 cameras, 1088x1920, from the pose2sim 0.10.49 wheel on PyPI. Its Calib.qca.txt is the same Qualisys
 # calibration as the TOML in pose2sim 0.4.15 (scripts/fetch-real-data.sh), which the tests use.
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 DEST="$ROOT/.cache/pose2sim-0.10.49"
-if [ ! -f "$DEST/.complete-1" ]; then
+if [ ! -f "$DEST/.complete-2" ]; then
   TMP="$(mktemp -d)"
   trap 'rm -rf "$TMP"' EXIT
   PIP="pip3"
@@ -15,9 +15,10 @@ if [ ! -f "$DEST/.complete-1" ]; then
   rm -rf "$DEST"
   mkdir -p "$DEST"
   python3 "$ROOT/scripts/extract-from-wheel.py" "$TMP"/pose2sim-0.10.49-*.whl "$DEST" --strip Pose2Sim/ \
-    Pose2Sim/Demo_SinglePerson/videos/ Pose2Sim/Demo_SinglePerson/calibration/Calib.qca.txt
-  echo "From the pose2sim 0.10.49 wheel (PyPI), Pose2Sim/Demo_SinglePerson: BSD-3-Clause, (c) David Pagnon." > "$DEST/LICENSE-NOTE.txt"
-  touch "$DEST/.complete-1"
+    Pose2Sim/Demo_SinglePerson/videos/ Pose2Sim/Demo_SinglePerson/calibration/Calib.qca.txt \
+    Pose2Sim/Demo_MultiPerson/videos/ Pose2Sim/Demo_MultiPerson/calibration/Calib.qca.txt
+  echo "From the pose2sim 0.10.49 wheel (PyPI), Pose2Sim/Demo_SinglePerson and Demo_MultiPerson: BSD-3-Clause, (c) David Pagnon." > "$DEST/LICENSE-NOTE.txt"
+  touch "$DEST/.complete-2"
 fi
 
 # The same four views as H.264 elementary streams (Annex B, one access unit delimiter per frame, no B-frames,

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -64,6 +65,64 @@ void write_debug_images(const octocap::Session& session, const octocap_calibrati
   }
 }
 
+// OUT.trc -> OUT_person<ID>.trc: each tracked person's take, aligned with the recording's frames (empty frames where
+// the person was not there).
+std::string person_path(const std::string& path, uint32_t id) {
+  const std::filesystem::path p(path);
+  return (p.parent_path() / (p.stem().string() + "_person" + std::to_string(id) + p.extension().string())).string();
+}
+
+// One TRC (and BVH) per person id, opened when the person first appears.
+class PeopleWriters {
+ public:
+  PeopleWriters(std::string trc, std::string bvh, octocap_layout_t layout, octocap_up_axis_t up, double rate)
+      : trc_(std::move(trc)), bvh_(std::move(bvh)), layout_(layout), up_(up), rate_(rate) {}
+
+  void add(const octocap::Frame& frame) {
+    std::vector<bool> added(takes_.size(), false);
+    for (uint32_t i = 0; i < frame.person_count(); ++i) {
+      const uint32_t id = frame.person(i).id;
+      size_t t = 0;
+      while (t < takes_.size() && takes_[t].id != id) ++t;
+      if (t == takes_.size()) {
+        takes_.push_back(Take{id, {}});
+        takes_[t].writers.emplace_back(person_path(trc_, id), OCTOCAP_MOTION_TRC, layout_, up_, rate_);
+        if (!bvh_.empty()) takes_[t].writers.emplace_back(person_path(bvh_, id), OCTOCAP_MOTION_BVH, layout_, up_, rate_);
+        for (size_t f = 0; f < frames_; ++f)
+          for (octocap::MotionWriter& w : takes_[t].writers) w.add_empty();
+        added.push_back(false);
+      }
+      for (octocap::MotionWriter& w : takes_[t].writers) w.add(frame, i);
+      added[t] = true;
+    }
+    for (size_t t = 0; t < takes_.size(); ++t)
+      if (!added[t])
+        for (octocap::MotionWriter& w : takes_[t].writers) w.add_empty();
+    ++frames_;
+  }
+  void close() {
+    for (Take& t : takes_)
+      for (octocap::MotionWriter& w : t.writers) w.close();
+  }
+  std::string written() const {
+    std::string s;
+    for (const Take& t : takes_) s += (s.empty() ? "" : ", ") + person_path(trc_, t.id);
+    return s.empty() ? "no person file (nobody was solved)" : s;
+  }
+
+ private:
+  struct Take {
+    uint32_t id;
+    std::vector<octocap::MotionWriter> writers;
+  };
+  std::string trc_, bvh_;
+  octocap_layout_t layout_;
+  octocap_up_axis_t up_;
+  double rate_;
+  std::vector<Take> takes_;
+  size_t frames_ = 0;
+};
+
 int solve(const SolveOptions& o) {
   octocap_set_log_callback(log_to_stderr, OCTOCAP_LOG_WARNING, nullptr);
   if (!std::isfinite(o.rate_hz) || o.rate_hz < 1e-3 || o.rate_hz > 1e5)
@@ -115,6 +174,8 @@ int solve(const SolveOptions& o) {
   cfg.delta_m = static_cast<float>(o.delta_mm / 1000.0);
   cfg.worker_threads = o.threads;
   cfg.first_frame_index = o.start_frame;
+  cfg.max_people = o.people == "auto" ? 0u : static_cast<uint32_t>(std::stoul(o.people));
+  const bool several = cfg.max_people != 1;
   apply_outputs(o.out, cfg);
   if (!o.debug_images.empty()) std::filesystem::create_directories(o.debug_images);
   octocap::Session session(cfg, calib);
@@ -124,9 +185,14 @@ int solve(const SolveOptions& o) {
 
   // Each file is written when closed at the end; a take that fails on the way leaves none behind.
   std::vector<octocap::MotionWriter> writers;
-  writers.emplace_back(o.output, OCTOCAP_MOTION_TRC, layout, up, o.rate_hz);
-  if (!o.csv.empty()) writers.emplace_back(o.csv, OCTOCAP_MOTION_CSV, layout, up, o.rate_hz);
-  if (!o.bvh.empty()) writers.emplace_back(o.bvh, OCTOCAP_MOTION_BVH, layout, up, o.rate_hz);
+  PeopleWriters people_writers(o.output, o.bvh, layout, up, o.rate_hz);
+  if (several) {
+    if (!o.csv.empty()) writers.emplace_back(o.csv, OCTOCAP_MOTION_CSV_PEOPLE, layout, up, o.rate_hz);
+  } else {
+    writers.emplace_back(o.output, OCTOCAP_MOTION_TRC, layout, up, o.rate_hz);
+    if (!o.csv.empty()) writers.emplace_back(o.csv, OCTOCAP_MOTION_CSV, layout, up, o.rate_hz);
+    if (!o.bvh.empty()) writers.emplace_back(o.bvh, OCTOCAP_MOTION_BVH, layout, up, o.rate_hz);
+  }
 
   const uint32_t K = octocap_layout_keypoint_count(layout);
   GroundTruth gt;
@@ -142,6 +208,8 @@ int solve(const SolveOptions& o) {
   std::vector<uint32_t> people(views);
   std::vector<octocap_joint_t> joints(K);
   std::vector<double> errors;
+  std::vector<size_t> people_histogram;               // frames with 0, 1, 2, ... people
+  std::map<uint32_t, std::vector<double>> person_errors;  // per person id: reprojection errors
   size_t solved_keypoints = 0, frames_with_result = 0, frames_multi = 0;
   double solve_ms = 0, detect_ms = 0;
   std::string detect_model;
@@ -175,9 +243,9 @@ int solve(const SolveOptions& o) {
       const octocap_detect_info_t dinfo = session.detect_info();
       detect_ms += dinfo.total_ms;
       detect_model = dinfo.model;
-      bool several = false;
-      for (uint32_t v = 0; v < views; ++v) several = several || session.detections(v).size() > K;
-      frames_multi += several;
+      bool crowded = false;
+      for (uint32_t v = 0; v < views; ++v) crowded = crowded || session.detections(v).size() > K;
+      frames_multi += crowded;
     } else {
       rec->read_frame(f, buffer, people);
       if (std::any_of(people.begin(), people.end(), [](uint32_t n) { return n > 1; })) ++frames_multi;
@@ -187,14 +255,31 @@ int solve(const SolveOptions& o) {
     if (!o.debug_images.empty() && source)
       write_debug_images(session, calib.get(), images, layout, K, frame, o.debug_images, f);
     solve_ms += frame.summary().solve_ms;
-    for (octocap::MotionWriter& w : writers) w.add(frame, 0);
+    const uint32_t present = frame.person_count();
+    if (several) {
+      for (uint32_t i = 0; i < present; ++i)
+        for (octocap::MotionWriter& w : writers) w.add(frame, i);
+      people_writers.add(frame);
+    } else {
+      for (octocap::MotionWriter& w : writers) w.add(frame, 0);
+    }
+    if (present >= people_histogram.size()) people_histogram.resize(present + 1, 0);
+    ++people_histogram[present];
+    for (uint32_t i = 0; i < present; ++i) {
+      joints = frame.keypoints3d(i);
+      const uint32_t id = frame.person(i).id;
+      for (uint32_t k = 0; k < K; ++k) {
+        if (!joints[k].valid) continue;
+        ++solved_keypoints;
+        errors.push_back(joints[k].reprojection_error_px);
+        person_errors[id].push_back(joints[k].reprojection_error_px);
+      }
+    }
     if (r == OCTOCAP_OK) {
       ++frames_with_result;
       joints = frame.keypoints3d(0);
       for (uint32_t k = 0; k < K; ++k) {
         if (!joints[k].valid) continue;
-        ++solved_keypoints;
-        errors.push_back(joints[k].reprojection_error_px);
         if (gt_index[k] >= 0 && f < gt.frames.size()) {
           const auto& g = gt.frames[f][gt_index[k]];
           if (std::isnan(g[0])) continue;
@@ -219,6 +304,7 @@ int solve(const SolveOptions& o) {
   const double total_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   for (octocap::MotionWriter& w : writers) w.close();
+  people_writers.close();
 
   const uint32_t done = frames > o.start_frame ? frames - o.start_frame : 0;  // frames this run solved
   double mean_err = 0;
@@ -229,8 +315,18 @@ int solve(const SolveOptions& o) {
               up == OCTOCAP_UP_Z ? "Z" : "Y");
   std::printf("  frames solved:        %zu / %u (%zu with several people in a view)\n", frames_with_result, done,
               frames_multi);
-  std::printf("  keypoints solved:     %zu / %zu (%.1f%%)\n", solved_keypoints, static_cast<size_t>(done) * K,
-              done ? 100.0 * solved_keypoints / (static_cast<double>(done) * K) : 0.0);
+  if (several) {
+    std::printf("  people:               %zu tracked;", person_errors.size());
+    for (size_t n = 0; n < people_histogram.size(); ++n)
+      if (people_histogram[n]) std::printf(" %zu frames with %zu,", people_histogram[n], n);
+    std::printf("\n");
+    for (auto& [id, errs] : person_errors)
+      std::printf("  person %-3u            %zu keypoints solved, reprojection error median %.2f px\n", id, errs.size(),
+                  median(errs));
+  }
+  std::printf("  keypoints solved:     %zu / %zu (%.1f%%)%s\n", solved_keypoints, static_cast<size_t>(done) * K,
+              done ? 100.0 * solved_keypoints / (static_cast<double>(done) * K) : 0.0,
+              several ? " (all people together)" : "");
   if (errors.empty())
     std::printf("  reprojection error:   n/a (no keypoint solved)\n");
   else
@@ -256,8 +352,11 @@ int solve(const SolveOptions& o) {
     if (worst_k >= 0)
       std::printf("  worst keypoint:       %s, %.1f mm mean\n", octocap_layout_keypoint_name(layout, worst_k), worst);
   }
-  std::printf("  wrote %s%s%s%s%s\n", o.output.c_str(), o.csv.empty() ? "" : ", ", o.csv.c_str(),
-              o.bvh.empty() ? "" : ", ", o.bvh.c_str());
+  if (several)
+    std::printf("  wrote %s%s%s\n", people_writers.written().c_str(), o.csv.empty() ? "" : ", ", o.csv.c_str());
+  else
+    std::printf("  wrote %s%s%s%s%s\n", o.output.c_str(), o.csv.empty() ? "" : ", ", o.csv.c_str(),
+                o.bvh.empty() ? "" : ", ", o.bvh.c_str());
   if (frames_with_result == 0) {
     std::fprintf(stderr, "octocap solve: no frame could be solved (no person seen by enough views)\n");
     return 3;

@@ -190,6 +190,8 @@ namespace Octocap
         public fixed byte StreamTopic[32];
         public uint VmcPort;
         public fixed byte VmcHost[64];
+        /// <summary>People per frame: 1 (default) one person; N up to N, tracked with stable ids; 0 everyone (up to 16).</summary>
+        public uint MaxPeople;
 
         /// <summary>The library's defaults for this struct's size (octocap_session_config_defaults).</summary>
         public static SessionConfig Default

@@ -48,6 +48,7 @@ static void layout(void) {
   FIELD(octocap_session_config_t, stream_qos); FIELD(octocap_session_config_t, stream_history_depth);
   FIELD(octocap_session_config_t, stream_source_id); FIELD(octocap_session_config_t, stream_topic);
   FIELD(octocap_session_config_t, vmc_port); FIELD(octocap_session_config_t, vmc_host);
+  FIELD(octocap_session_config_t, max_people);
   SIZE(octocap_detector_config_t);
   FIELD(octocap_detector_config_t, struct_size); FIELD(octocap_detector_config_t, model);
   FIELD(octocap_detector_config_t, mode); FIELD(octocap_detector_config_t, person_pick);

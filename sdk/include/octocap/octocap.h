@@ -83,7 +83,7 @@ extern "C" {
 
 /** Version of this header. The library's own is octocap_version_number(). */
 #define OCTOCAP_VERSION_MAJOR 1
-#define OCTOCAP_VERSION_MINOR 2
+#define OCTOCAP_VERSION_MINOR 3
 #define OCTOCAP_VERSION_PATCH 0
 /** MAJOR * 10000 + MINOR * 100 + PATCH: 10000 for 1.0.0. */
 #define OCTOCAP_VERSION_NUMBER (OCTOCAP_VERSION_MAJOR * 10000 + OCTOCAP_VERSION_MINOR * 100 + OCTOCAP_VERSION_PATCH)
@@ -337,7 +337,9 @@ typedef struct octocap_bone_pose_t {
 /** What a frame holds. `struct_size` is set by the caller (sizeof); the library fills what it knows of that size. */
 typedef struct octocap_frame_summary_t {
   uint32_t struct_size;         /**< Set by the caller to sizeof(octocap_frame_summary_t). */
-  uint32_t person_count;        /**< People in this frame (0 when nothing was solved). */
+  uint32_t person_count;        /**< People in this frame (0 when nothing was solved), in increasing id order. A
+                                     session solves one person unless its config's max_people says more; a DDS
+                                     subscriber and a motion file give at most one. */
   int64_t frame_index;          /**< The source's frame number (a session starts at its first_frame_index). */
   int64_t timestamp_us;         /**< Frame time given to the solve (0 for motion files). */
   octocap_layout_t layout;      /**< Layout of the keypoints of every person. */
@@ -354,7 +356,8 @@ typedef struct octocap_frame_summary_t {
 /** One person of a frame. `struct_size` is set by the caller. */
 typedef struct octocap_person_t {
   uint32_t struct_size;         /**< Set by the caller to sizeof(octocap_person_t). */
-  uint32_t id;                  /**< Stable within the source while the person is tracked; never 0. */
+  uint32_t id;                  /**< Stable within the source while the person is tracked; never 0, never reused
+                                     within a session (1 for a one-person session). Bind an avatar to it. */
   uint32_t keypoints_solved;    /**< Layout keypoints with valid = 1. */
   uint32_t keypoints_total;     /**< Layout keypoints. */
   uint32_t joints_solved;       /**< Skeleton joints with valid = 1. */
@@ -589,7 +592,18 @@ typedef struct octocap_session_config_t {
   uint32_t vmc_port;             /**< Non-zero: also send every frame as VMC protocol (OSC/UDP) to this port;
                                       VMC's usual port is ::OCTOCAP_VMC_DEFAULT_PORT. Default 0 (off). */
   char vmc_host[64];             /**< Receiver of the VMC output. Default "127.0.0.1". */
+  /* 1.3 */
+  uint32_t max_people;           /**< People solved per frame. 1 (default): one person, the one the views agree on,
+                                      followed over time (bystanders ignored). N > 1: up to N people, associated
+                                      across views and tracked with stable ids (octocap_person_t.id; a person who
+                                      leaves and comes back within a few seconds keeps the id when place and build
+                                      say it is the same person; ids are never reused within a session). 0: everyone
+                                      there, up to ::OCTOCAP_MAX_PEOPLE. People whose body is outside the capture
+                                      volume (volume_min/max) are not solved. */
 } octocap_session_config_t;
+
+/** The most people one frame holds (octocap_session_config_t.max_people = 0). */
+#define OCTOCAP_MAX_PEOPLE 16
 
 /**
  * Fills the first `struct_size` bytes of `cfg` with defaults and sets its struct_size. Errors: INVALID_ARGUMENT
@@ -619,8 +633,9 @@ OCTOCAP_API void octocap_session_destroy(octocap_session_t* session);
  *                   octocap_layout_keypoint_count(layout) keypoints in the layout's order. NaN, infinite,
  *                   zero-confidence and (0, 0) keypoints count as "not detected".
  * @param people_per_view  view_count counts (0 = nobody detected in that view; at most 64), or NULL for exactly one
- *                   person per view. With several people in a view, the session picks the one who agrees
- *                   with the other views and with the previous frame.
+ *                   person per view. With several people in a view and max_people = 1, the session picks the one
+ *                   who agrees with the other views and with the previous frame; with max_people != 1 it solves
+ *                   each person the views agree on (in any order in each view), and the frame holds them all.
  * @param view_count Must equal the calibration's camera count (cameras in calibration order).
  * @param timestamp_us  Frame time in microseconds; must increase for the filter to work.
  * @return ::OCTOCAP_OK when a person was solved (some joints may still be missing: they are reported so);
@@ -1141,8 +1156,11 @@ typedef int32_t octocap_motion_format_t;
 enum octocap_motion_format_values {
   OCTOCAP_MOTION_TRC = 0, /**< OpenSim TRC, Y up (Z-up worlds are turned as Pose2Sim does), metres. */
   OCTOCAP_MOTION_CSV = 1, /**< `frame,NAME_x,NAME_y,NAME_z,...`, calibration world frame, empty cells when missing. */
-  OCTOCAP_MOTION_BVH = 2  /**< The bone animation: one joint per bone (Mixamo-style names), median bone lengths,
+  OCTOCAP_MOTION_BVH = 2, /**< The bone animation: one joint per bone (Mixamo-style names), median bone lengths,
                                rig frame (Y up), centimetres. Frames come from octocap_motion_writer_add(). */
+  OCTOCAP_MOTION_CSV_PEOPLE = 3 /**< (1.3) Several people: `frame,person,NAME_x,NAME_y,NAME_z,...`, one row per
+                                     octocap_motion_writer_add() of a person present (frame = the frame's index,
+                                     person = its id), calibration world frame; empty frames add no row. */
 };
 
 /**

@@ -102,7 +102,8 @@ octocap_result_t octocap_motion_writer_create(const char* path, octocap_motion_f
     capi::require(path, "path");
     capi::require(out, "out");
     *out = nullptr;
-    if (format != OCTOCAP_MOTION_TRC && format != OCTOCAP_MOTION_CSV && format != OCTOCAP_MOTION_BVH)
+    if (format != OCTOCAP_MOTION_TRC && format != OCTOCAP_MOTION_CSV && format != OCTOCAP_MOTION_BVH &&
+        format != OCTOCAP_MOTION_CSV_PEOPLE)
       throw Error(Errc::invalid_argument, "unknown motion format");
     if (octocap_layout_keypoint_count(layout_id) == 0)
       throw Error(Errc::invalid_argument, "layout must be a concrete layout (not AUTO)");

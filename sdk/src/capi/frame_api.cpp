@@ -17,10 +17,10 @@ namespace {
 
 const FrameResult& frame_of(const octocap_frame_t* f) { return *capi::checked(f, "frame")->frame; }
 
-const FrameResult& person_of(const octocap_frame_t* f, uint32_t person) {
+const PersonResult& person_of(const octocap_frame_t* f, uint32_t person) {
   const FrameResult& r = frame_of(f);
   capi::check_person(r, person);
-  return r;
+  return r.people[person];
 }
 
 }  // namespace

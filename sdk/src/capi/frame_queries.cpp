@@ -41,7 +41,7 @@ void query_summary(const FrameResult& f, octocap_frame_summary_t* out) {
     s.frame_index = f.info.frame_index;
     s.timestamp_us = f.info.timestamp_us;
     s.layout = static_cast<octocap_layout_t>(f.layout);
-    s.keypoint_count = static_cast<uint32_t>(f.keypoints.size());
+    s.keypoint_count = static_cast<uint32_t>(f.keypoint_count());
     s.definition_counter = f.definition_counter;
     s.source_id = f.source_id;
     s.view_count = f.view_count;
@@ -52,15 +52,16 @@ void query_summary(const FrameResult& f, octocap_frame_summary_t* out) {
 
 void query_person(const FrameResult& f, uint32_t person, octocap_person_t* out) {
   check_person(f, person);
+  const PersonResult& r = f.people[person];
   fill_sized(out, sizeof(octocap_person_t), "octocap_person_t", [&](octocap_person_t& p) {
-    p.id = 1;  // one tracked person per source today; ids are per source and never 0
-    p.keypoints_solved = f.info.keypoints_solved;
-    p.keypoints_total = static_cast<uint32_t>(f.keypoints.size());
-    for (const PointResult& j : f.joints) p.joints_solved += j.valid ? 1 : 0;
-    p.views_with_person = f.info.views_with_person;
-    p.mean_reprojection_error_px = static_cast<float>(f.info.mean_reprojection_error_px);
+    p.id = r.id;
+    p.keypoints_solved = r.keypoints_solved;
+    p.keypoints_total = static_cast<uint32_t>(r.keypoints.size());
+    for (const PointResult& j : r.joints) p.joints_solved += j.valid ? 1 : 0;
+    p.views_with_person = r.views_with_person;
+    p.mean_reprojection_error_px = static_cast<float>(r.mean_reprojection_error_px);
     double conf = 0;
-    for (const PointResult& k : f.keypoints) conf += k.valid ? k.confidence : 0;
+    for (const PointResult& k : r.keypoints) conf += k.valid ? k.confidence : 0;
     p.confidence = p.keypoints_solved ? static_cast<float>(conf / p.keypoints_solved) : 0.f;
   });
 }
@@ -77,19 +78,19 @@ void query_frame_info(const FrameResult& f, octocap_frame_info_t* out) {
   out->solve_ms = static_cast<float>(f.info.solve_ms);
 }
 
-void query_keypoints(const FrameResult& f, octocap_joint_t* out, uint32_t capacity, uint32_t* count) {
+void query_keypoints(const PersonResult& f, octocap_joint_t* out, uint32_t capacity, uint32_t* count) {
   fill_array(static_cast<uint32_t>(f.keypoints.size()), out, capacity, count, [&] {
     for (size_t k = 0; k < f.keypoints.size(); ++k) to_c_joint(f.keypoints[k], out[k]);
   });
 }
 
-void query_joints(const FrameResult& f, octocap_joint_t* out, uint32_t capacity, uint32_t* count) {
+void query_joints(const PersonResult& f, octocap_joint_t* out, uint32_t capacity, uint32_t* count) {
   fill_array(kJointCount, out, capacity, count, [&] {
     for (int j = 0; j < kJointCount; ++j) to_c_joint(f.joints[j], out[j]);
   });
 }
 
-void query_bones(const FrameResult& f, octocap_coord_frame_t frame, octocap_bone_pose_t* out, uint32_t capacity,
+void query_bones(const PersonResult& f, octocap_coord_frame_t frame, octocap_bone_pose_t* out, uint32_t capacity,
                  uint32_t* count) {
   const CoordFrame cf = frame_of(frame);
   fill_array(kBoneCount, out, capacity, count, [&] {
@@ -107,7 +108,7 @@ void query_bones(const FrameResult& f, octocap_coord_frame_t frame, octocap_bone
   });
 }
 
-void query_person_views(const FrameResult& f, int32_t* out, uint32_t capacity, uint32_t* count) {
+void query_person_views(const PersonResult& f, int32_t* out, uint32_t capacity, uint32_t* count) {
   fill_array(static_cast<uint32_t>(f.selected.size()), out, capacity, count, [&] {
     for (size_t v = 0; v < f.selected.size(); ++v) out[v] = f.selected[v];
   });

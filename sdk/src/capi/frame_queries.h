@@ -27,11 +27,11 @@ void check_person(const FrameResult& f, uint32_t person, bool allow_empty = fals
 void query_summary(const FrameResult& f, octocap_frame_summary_t* out);
 void query_person(const FrameResult& f, uint32_t person, octocap_person_t* out);
 void query_frame_info(const FrameResult& f, octocap_frame_info_t* out);  // deprecated 0.x struct
-void query_keypoints(const FrameResult& f, octocap_joint_t* out, uint32_t capacity, uint32_t* count);
-void query_joints(const FrameResult& f, octocap_joint_t* out, uint32_t capacity, uint32_t* count);
-void query_bones(const FrameResult& f, octocap_coord_frame_t frame, octocap_bone_pose_t* out, uint32_t capacity,
+void query_keypoints(const PersonResult& f, octocap_joint_t* out, uint32_t capacity, uint32_t* count);
+void query_joints(const PersonResult& f, octocap_joint_t* out, uint32_t capacity, uint32_t* count);
+void query_bones(const PersonResult& f, octocap_coord_frame_t frame, octocap_bone_pose_t* out, uint32_t capacity,
                  uint32_t* count);
-void query_person_views(const FrameResult& f, int32_t* out, uint32_t capacity, uint32_t* count);
+void query_person_views(const PersonResult& f, int32_t* out, uint32_t capacity, uint32_t* count);
 void to_c_joint(const PointResult& r, octocap_joint_t& out);
 
 // Output structs with a caller-set struct_size: fills a full local copy, then copies what the caller's size holds.

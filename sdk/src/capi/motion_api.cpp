@@ -15,15 +15,17 @@ FrameResult frame_at(const octocap_motion_t* m, uint32_t frame) {
                                             std::to_string(m->motion.frames.size()) + " frames)");
   const SkeletonJoints& j = m->motion.frames[frame];
   FrameResult f;
-  f.keypoints.clear();
   f.info.frame_index = frame;
   f.rig_frame_joints = true;
   f.definition_counter = m->definition_counter;
+  PersonResult p;  // a motion file holds one person (id 1), joints only
   for (int k = 0; k < kJointCount; ++k) {
-    f.joints[k].valid = j[k].allFinite();
-    if (f.joints[k].valid) f.joints[k].position = j[k];
+    p.joints[k].valid = j[k].allFinite();
+    if (p.joints[k].valid) p.joints[k].position = j[k];
   }
-  f.bones = m->bones[frame];
+  p.bones = m->bones[frame];
+  if (p.has_pose()) f.people.push_back(p);
+  else f.blank = p;
   return f;
 }
 
@@ -67,12 +69,12 @@ octocap_result_t octocap_motion_get_frame(const octocap_motion_t* m, uint32_t in
 
 octocap_result_t octocap_motion_joints(const octocap_motion_t* m, uint32_t frame, octocap_joint_t* out,
                                        uint32_t capacity, uint32_t* count) {
-  return capi::guard([&] { capi::query_joints(frame_at(m, frame), out, capacity, count); });
+  return capi::guard([&] { capi::query_joints(frame_at(m, frame).person_or_blank(0), out, capacity, count); });
 }
 
 octocap_result_t octocap_motion_bones(const octocap_motion_t* m, uint32_t frame, octocap_coord_frame_t coord_frame,
                                       octocap_bone_pose_t* out, uint32_t capacity, uint32_t* count) {
-  return capi::guard([&] { capi::query_bones(frame_at(m, frame), coord_frame, out, capacity, count); });
+  return capi::guard([&] { capi::query_bones(frame_at(m, frame).person_or_blank(0), coord_frame, out, capacity, count); });
 }
 
 }  // extern "C"

@@ -28,9 +28,11 @@ SessionConfig session_config(const octocap_session_config_t* given) {
   const bool nested_detector = given->struct_size == sizeof(capi::LegacySessionConfig03);
   if (nested_detector) detector = reinterpret_cast<const capi::LegacySessionConfig03*>(given)->detector;
   if (given->struct_size < sizeof(octocap_session_config_t))
-    log(LogLevel::info, "session config of a 0.x program (struct_size " + std::to_string(given->struct_size) +
+    log(LogLevel::info, "session config of an older program (struct_size " + std::to_string(given->struct_size) +
                             "): fields it does not have take their defaults");
-  octocap_session_config_t c = given->struct_size >= sizeof c ? *given : capi::widen(*given, defaults);
+  // A 0.3 caller's struct holds 1.0's session fields, then its detector config.
+  octocap_session_config_t c = defaults;
+  std::memcpy(&c, given, nested_detector ? capi::kSessionConfigSize10 : std::min<size_t>(given->struct_size, sizeof c));
   c.struct_size = sizeof c;
   SessionConfig s;
   s.layout = static_cast<LayoutId>(c.layout);
@@ -68,6 +70,7 @@ SessionConfig session_config(const octocap_session_config_t* given) {
   if (s.vmc_port && (host_len == 0 || host_len == sizeof c.vmc_host))
     throw Error(Errc::invalid_argument, "config.vmc_host must be a NUL-terminated host name");
   s.vmc_host.assign(c.vmc_host, host_len);
+  s.max_people = c.max_people;
   s.detector = capi::detector_config(detector);
   return s;
 }
@@ -114,11 +117,12 @@ octocap_result_t octocap_session_config_defaults(octocap_session_config_t* c, ui
     capi::copy_name(d.stream_topic, sizeof d.stream_topic, "octocap");
     d.vmc_port = 0;
     capi::copy_name(d.vmc_host, sizeof d.vmc_host, "127.0.0.1");
+    d.max_people = 1;
     if (struct_size == sizeof(capi::LegacySessionConfig03)) {
       capi::LegacySessionConfig03 legacy{};
-      legacy.base = d;
+      d.struct_size = struct_size;
+      std::memcpy(legacy.base, &d, sizeof legacy.base);
       octocap_detector_config_init(&legacy.detector);
-      legacy.base.struct_size = struct_size;
       std::memcpy(c, &legacy, sizeof legacy);
       return;
     }
@@ -225,22 +229,22 @@ octocap_result_t octocap_session_get_frame_info(const octocap_session_t* s, octo
 
 octocap_result_t octocap_session_get_keypoints3d(const octocap_session_t* s, octocap_joint_t* out,
                                                  uint32_t capacity, uint32_t* count) {
-  return capi::guard([&] { capi::query_keypoints(result_of(s), out, capacity, count); });
+  return capi::guard([&] { capi::query_keypoints(result_of(s).person_or_blank(0), out, capacity, count); });
 }
 
 octocap_result_t octocap_session_get_joints(const octocap_session_t* s, octocap_joint_t* out, uint32_t capacity,
                                             uint32_t* count) {
-  return capi::guard([&] { capi::query_joints(result_of(s), out, capacity, count); });
+  return capi::guard([&] { capi::query_joints(result_of(s).person_or_blank(0), out, capacity, count); });
 }
 
 octocap_result_t octocap_session_get_selected_people(const octocap_session_t* s, int32_t* out, uint32_t capacity,
                                                      uint32_t* count) {
-  return capi::guard([&] { capi::query_person_views(result_of(s), out, capacity, count); });
+  return capi::guard([&] { capi::query_person_views(result_of(s).person_or_blank(0), out, capacity, count); });
 }
 
 octocap_result_t octocap_session_get_bones(const octocap_session_t* s, octocap_coord_frame_t frame,
                                            octocap_bone_pose_t* out, uint32_t capacity, uint32_t* count) {
-  return capi::guard([&] { capi::query_bones(result_of(s), frame, out, capacity, count); });
+  return capi::guard([&] { capi::query_bones(result_of(s).person_or_blank(0), frame, out, capacity, count); });
 }
 
 octocap_result_t octocap_session_get_bone_rotation(const octocap_session_t* s, uint32_t bone,
@@ -251,7 +255,7 @@ octocap_result_t octocap_session_get_bone_rotation(const octocap_session_t* s, u
       throw Error(Errc::invalid_argument, "bone index " + std::to_string(bone) + " out of range");
     octocap_bone_pose_t bones[kBoneCount];
     uint32_t n = 0;
-    capi::query_bones(result_of(s), frame, bones, kBoneCount, &n);
+    capi::query_bones(result_of(s).person_or_blank(0), frame, bones, kBoneCount, &n);
     *out = bones[bone].local_rotation;
   });
 }

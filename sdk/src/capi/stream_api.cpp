@@ -164,17 +164,17 @@ octocap_result_t octocap_subscriber_get_frame_info(const octocap_subscriber_t* s
 
 octocap_result_t octocap_subscriber_get_keypoints3d(const octocap_subscriber_t* s, octocap_joint_t* out,
                                                     uint32_t capacity, uint32_t* count) {
-  return capi::guard([&] { capi::query_keypoints(current(s), out, capacity, count); });
+  return capi::guard([&] { capi::query_keypoints(current(s).person_or_blank(0), out, capacity, count); });
 }
 
 octocap_result_t octocap_subscriber_get_joints(const octocap_subscriber_t* s, octocap_joint_t* out, uint32_t capacity,
                                                uint32_t* count) {
-  return capi::guard([&] { capi::query_joints(current(s), out, capacity, count); });
+  return capi::guard([&] { capi::query_joints(current(s).person_or_blank(0), out, capacity, count); });
 }
 
 octocap_result_t octocap_subscriber_get_bones(const octocap_subscriber_t* s, octocap_coord_frame_t frame,
                                               octocap_bone_pose_t* out, uint32_t capacity, uint32_t* count) {
-  return capi::guard([&] { capi::query_bones(current(s), frame, out, capacity, count); });
+  return capi::guard([&] { capi::query_bones(current(s).person_or_blank(0), frame, out, capacity, count); });
 }
 
 }  // extern "C"

@@ -14,8 +14,10 @@
 namespace octocap::capi {
 
 // octocap_session_config_t: 0.1 (84), 0.2 streaming (152), 0.2 VMC = 1.0 (216), 0.3 with the detector config nested
-// at its end (760; see LegacySessionConfig03).
-constexpr std::initializer_list<uint32_t> kSessionConfigSizes = {84, 152, 216, 760};
+// at its end (760; see LegacySessionConfig03), 1.3 max_people (224).
+constexpr std::initializer_list<uint32_t> kSessionConfigSizes = {84, 152, 216, 760, 224};
+// The size of the 1.0 session config, which the 0.3 layout nests its detector config after.
+constexpr uint32_t kSessionConfigSize10 = 216;
 // octocap_detector_config_t: 0.3 (540), 0.3 parallel_views = 1.0 (544).
 constexpr std::initializer_list<uint32_t> kDetectorConfigSizes = {540, 544};
 constexpr std::initializer_list<uint32_t> kSubscriberConfigSizes = {52};
@@ -27,12 +29,14 @@ constexpr std::initializer_list<uint32_t> kLiveConfigSizes = {28, 64};
 // octocap_node_config_t: 1.1 (92).
 constexpr std::initializer_list<uint32_t> kNodeConfigSizes = {92};
 
-// The 0.3 session config: today's fields, then the detector config (now set with octocap_session_set_detector()).
+// The 0.3 session config: 1.0's 216 bytes of session fields, then the detector config (now set with
+// octocap_session_set_detector()).
 struct LegacySessionConfig03 {
-  octocap_session_config_t base;
+  unsigned char base[kSessionConfigSize10];
   octocap_detector_config_t detector;
 };
-static_assert(sizeof(octocap_session_config_t) == 216, "1.0's session config is 0.2's: grow it only at its end");
+static_assert(sizeof(octocap_session_config_t) == 224 && offsetof(octocap_session_config_t, max_people) == 216,
+              "1.3's session config is 1.0's and max_people: grow it only at its end");
 static_assert(offsetof(LegacySessionConfig03, detector) == 216 && sizeof(LegacySessionConfig03) == 760,
               "the 0.3 layout must stay byte-exact");
 static_assert(sizeof(octocap_detector_config_t) == 544 && sizeof(octocap_subscriber_config_t) == 52 &&

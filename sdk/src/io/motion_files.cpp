@@ -60,11 +60,14 @@ void write_trc(const std::string& path, const MotionTrack& track, bool z_up) {
 
 void write_csv(const std::string& path, const MotionTrack& track) {
   std::ofstream out = open_out(path);
-  out << "frame";
+  out << (track.per_person ? "frame,person" : "frame");
   for (const auto& m : track.markers) out << "," << m << "_x," << m << "_y," << m << "_z";
   out << "\n";
   for (size_t f = 0; f < track.frames.size(); ++f) {
-    out << f;
+    if (track.per_person)
+      out << track.rows.at(f).first << "," << track.rows.at(f).second;
+    else
+      out << f;
     for (const auto& p : track.frames[f]) {
       if (p.allFinite())
         out << "," << p.x() << "," << p.y() << "," << p.z();

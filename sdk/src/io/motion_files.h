@@ -2,6 +2,7 @@
 #pragma once
 #include <Eigen/Core>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace octocap {
@@ -13,12 +14,16 @@ struct MotionTrack {
   std::vector<std::string> markers;
   std::vector<MarkerFrame> frames;
   double rate_hz = 30.0;
+  // A take of several people: each row is one person in one frame, (frame number, person id) per row.
+  bool per_person = false;
+  std::vector<std::pair<int64_t, uint32_t>> rows;
 };
 
 // TRC as OpenSim reads it (Y up, metres). When `z_up` the positions are turned (x, y, z) -> (y, z, x),
 // Pose2Sim's zup2yup, so a Z-up lab world stands upright in OpenSim.
 void write_trc(const std::string& path, const MotionTrack& track, bool z_up);
-// `frame,NAME_x,NAME_y,NAME_z,...`, positions as given (the calibration's world), empty cells when missing.
+// `frame,NAME_x,NAME_y,NAME_z,...`, positions as given (the calibration's world), empty cells when missing;
+// `frame,person,NAME_x,...` for a per-person track (one row per person and frame).
 void write_csv(const std::string& path, const MotionTrack& track);
 // Reads a TRC (positions as stored in the file; mm files are converted to metres).
 MotionTrack read_trc(const std::string& path);

@@ -1,5 +1,6 @@
 #include "pipeline/session.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -10,6 +11,7 @@
 #include "stream/dds_publisher.h"
 #include "stream/vmc_sender.h"
 #endif
+#include "solve/association.h"
 #include "solve/person_select.h"
 #include "solve/subdivision.h"
 #include "solve/triangulation.h"
@@ -48,6 +50,9 @@ void validate(const SessionConfig& c) {
     throw Error(Errc::invalid_argument, "config.first_frame_index must be 0 .. 2^62");
   if (c.volume_min != c.volume_max && (c.volume_max.array() <= c.volume_min.array()).any())
     throw Error(Errc::invalid_argument, "config.volume_max must exceed volume_min on every axis");
+  if (c.max_people > kMaxPeople)
+    throw Error(Errc::invalid_argument, "config.max_people must be 0 (all) .. " + std::to_string(kMaxPeople) + ", is " +
+                                            std::to_string(c.max_people));
 }
 
 // NaN/inf, zero confidence or OpenPose's (0, 0) placeholder is "not detected", not an error: detectors emit them.
@@ -94,8 +99,9 @@ Session::Session(const SessionConfig& config, Calibration calib)
   z_up_ = config_.up == UpAxis::automatic ? guess_z_up(calib_) : config_.up == UpAxis::z;
   pool_ = std::make_unique<WorkerPool>(config_.threads);
   const size_t K = layout_->keypoints.size();
-  filters_.assign(K, OneEuroFilter3(config_.filter_min_cutoff, config_.filter_beta));
-  frame_.keypoints.assign(K, PointResult{});
+  single_ = new_person_state();
+  if (config_.max_people != 1) tracks_ = std::make_unique<PersonTracks>(*layout_);
+  frame_.blank.keypoints.assign(K, PointResult{});
   frame_.layout = config_.layout;
   frame_.view_count = static_cast<uint32_t>(cams);
   frame_.definition_counter = next_definition_counter();
@@ -128,10 +134,16 @@ uint32_t Session::stream_readers() const {
   return n;
 }
 
+Session::PersonState Session::new_person_state() const {
+  PersonState st;
+  st.filters.assign(layout_->keypoints.size(), OneEuroFilter3(config_.filter_min_cutoff, config_.filter_beta));
+  return st;
+}
+
 void Session::reset() {
-  for (auto& f : filters_) f.reset();
-  bone_solver_.reset();
-  raw_previous_.clear();
+  single_ = new_person_state();
+  if (tracks_) tracks_->reset();
+  states_.clear();
   last_timestamp_us_ = 0;
   has_timestamp_ = false;
   solved_any_ = false;
@@ -142,9 +154,10 @@ void Session::reset() {
 }
 
 void Session::clear_frame() {
-  frame_.keypoints.assign(layout_->keypoints.size(), PointResult{});
-  frame_.joints.fill(PointResult{});
-  frame_.bones = SkeletonPose{};
+  frame_.people.clear();
+  frame_.blank = PersonResult{};
+  frame_.blank.keypoints.assign(layout_->keypoints.size(), PointResult{});
+  frame_.blank.selected.assign(calib_.size(), -1);
 }
 
 PointResult Session::solve_keypoint(const std::vector<ViewRay>& rays) const {
@@ -196,13 +209,6 @@ bool Session::solve(const std::vector<std::vector<Person2D>>& people, int64_t ti
       usable[v].push_back(std::move(person));
       original[v].push_back(static_cast<int>(p));
     }
-  frame_.selected = select_people(calib_, usable, raw_previous_, {config_.min_confidence, 2 * config_.outlier_threshold_px});
-  uint32_t with_person = 0;
-  for (int s : frame_.selected) with_person += s >= 0;
-  std::vector<int> selected_usable = frame_.selected;
-  for (size_t v = 0; v < V; ++v)
-    if (frame_.selected[v] >= 0) frame_.selected[v] = original[v][frame_.selected[v]];  // report indices into the caller's list
-
   // In double: the difference of two extreme int64 timestamps overflows int64.
   const double dt = has_timestamp_
                         ? (static_cast<double>(timestamp_us) - static_cast<double>(last_timestamp_us_)) * 1e-6
@@ -212,26 +218,111 @@ bool Session::solve(const std::vector<std::vector<Person2D>>& people, int64_t ti
   solved_any_ = true;
   frame_.info.timestamp_us = timestamp_us;
   last_timestamp_us_ = timestamp_us;
-  frame_.info.views_with_person = with_person;
   frame_.info.keypoints_total = static_cast<uint32_t>(K);
   clear_frame();
+  if (config_.max_people == 1)
+    solve_one(usable, original, dt);
+  else
+    solve_several(usable, original, dt, timestamp_us);
 
-  if (with_person < static_cast<uint32_t>(config_.min_views)) {
-    frame_.info.keypoints_solved = 0;
-    frame_.info.mean_reprojection_error_px = 0;
-    frame_.info.solve_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    raw_previous_.clear();
-    for (auto& f : filters_) f.reset();
-    publish();
-    return false;
+  // The frame as a whole: every person's keypoints, the views that hold anyone.
+  uint32_t solved = 0;
+  double err = 0;
+  std::vector<bool> seen(V, false);
+  for (const PersonResult& p : frame_.people) {
+    solved += p.keypoints_solved;
+    err += p.mean_reprojection_error_px * p.keypoints_solved;
+    for (size_t v = 0; v < p.selected.size() && v < V; ++v)
+      if (p.selected[v] >= 0) seen[v] = true;
   }
+  frame_.info.keypoints_solved = solved;
+  frame_.info.mean_reprojection_error_px = solved ? err / solved : 0;
+  if (config_.max_people != 1) frame_.info.views_with_person = static_cast<uint32_t>(std::count(seen.begin(), seen.end(), true));
+  frame_.info.solve_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  publish();
+  return frame_.has_person();
+}
 
+void Session::solve_one(const std::vector<std::vector<Person2D>>& usable, const std::vector<std::vector<int>>& original,
+                        double dt) {
+  const size_t V = calib_.size();
+  const std::vector<int> choice =
+      select_people(calib_, usable, single_.raw_previous, {config_.min_confidence, 2 * config_.outlier_threshold_px});
+  PersonResult& blank = frame_.blank;
+  uint32_t with_person = 0;
+  for (size_t v = 0; v < V; ++v) {
+    with_person += choice[v] >= 0;
+    blank.selected[v] = choice[v] >= 0 ? original[v][choice[v]] : -1;  // indices into the caller's list
+  }
+  blank.views_with_person = frame_.info.views_with_person = with_person;
+  if (with_person < static_cast<uint32_t>(config_.min_views)) {
+    single_.raw_previous.clear();
+    for (auto& f : single_.filters) f.reset();
+    return;
+  }
+  PersonResult person = blank;
+  person.keypoints = solve_points(usable, choice);
+  finish_person(person, single_, dt);
+  if (person.has_pose()) frame_.people.push_back(std::move(person));
+}
+
+void Session::solve_several(const std::vector<std::vector<Person2D>>& usable,
+                            const std::vector<std::vector<int>>& original, double dt, int64_t timestamp_us) {
+  const size_t V = calib_.size();
+  AssociationParams params;
+  params.min_confidence = config_.min_confidence;
+  params.threshold_px = 2 * config_.outlier_threshold_px;
+  params.min_views = config_.min_views;
+  params.max_people = config_.max_people == 0 ? kMaxPeople : config_.max_people;
+  params.volume = volume_;
+  const std::vector<PersonCluster> clusters = associate_people(calib_, usable, tracks_->priors(timestamp_us), params);
+
+  std::vector<PersonResult> people;
+  std::vector<std::vector<Eigen::Vector3d>> raw;
+  std::vector<int> prior_of;
+  for (const PersonCluster& c : clusters) {
+    PersonResult p;
+    p.keypoints = solve_points(usable, c.choice);
+    std::vector<Eigen::Vector3d> pose(p.keypoints.size(), Eigen::Vector3d::Constant(std::nan("")));
+    int solved = 0;
+    for (size_t k = 0; k < pose.size(); ++k)
+      if (p.keypoints[k].valid) pose[k] = p.keypoints[k].position, ++solved;
+    if (solved < 3) continue;  // the views agreed on too little of a body to call it a person
+    p.selected.assign(V, -1);
+    for (size_t v = 0; v < V; ++v)
+      if (c.choice[v] >= 0) p.selected[v] = original[v][c.choice[v]], ++p.views_with_person;
+    people.push_back(std::move(p));
+    raw.push_back(std::move(pose));
+    prior_of.push_back(c.prior);
+  }
+  const std::vector<uint32_t> ids = tracks_->update(raw, prior_of, timestamp_us);
+  for (uint32_t gone : tracks_->forgotten()) states_.erase(gone);
+  for (size_t i = 0; i < people.size(); ++i) {
+    people[i].id = ids[i];
+    auto [it, fresh] = states_.try_emplace(ids[i]);
+    if (fresh) it->second = new_person_state();
+    PersonState& state = it->second;
+    // A track that was away has a stale filter state: it starts again from this frame.
+    if (state.raw_previous.empty()) for (auto& f : state.filters) f.reset();
+    finish_person(people[i], state, dt);
+  }
+  // Tracks not seen this frame: their filters restart when they come back.
+  for (auto& [id, state] : states_)
+    if (std::find(ids.begin(), ids.end(), id) == ids.end()) state.raw_previous.clear();
+  std::sort(people.begin(), people.end(), [](const PersonResult& a, const PersonResult& b) { return a.id < b.id; });
+  frame_.people = std::move(people);
+}
+
+std::vector<PointResult> Session::solve_points(const std::vector<std::vector<Person2D>>& usable,
+                                               const std::vector<int>& choice) const {
+  const size_t V = calib_.size(), K = layout_->keypoints.size();
+  std::vector<PointResult> points(K);
   pool_->parallel_for(K, [&](size_t k) {
     std::vector<ViewRay> rays;
     rays.reserve(V);
     for (size_t v = 0; v < V; ++v) {
-      if (selected_usable[v] < 0) continue;
-      const Keypoint2D& kp = usable[v][selected_usable[v]][k];
+      if (choice[v] < 0) continue;
+      const Keypoint2D& kp = usable[v][choice[v]][k];
       if (!(kp.confidence >= config_.min_confidence) || !std::isfinite(kp.x) || !std::isfinite(kp.y)) continue;
       rays.push_back(make_view_ray(calib_[v], static_cast<int>(v), {kp.x, kp.y}, kp.confidence));
     }
@@ -240,74 +331,72 @@ bool Session::solve(const std::vector<std::vector<Person2D>>& people, int64_t ti
     if (r.valid && (!r.position.allFinite() || !std::isfinite(r.reprojection_error_px) ||
                     r.position.cwiseAbs().maxCoeff() > 1e6))
       r = PointResult{};
-    frame_.keypoints[k] = r;
+    points[k] = r;
   });
+  return points;
+}
 
-  raw_previous_.assign(K, Eigen::Vector3d::Constant(std::nan("")));
+void Session::finish_person(PersonResult& person, PersonState& state, double dt) const {
+  const size_t K = person.keypoints.size();
+  state.raw_previous.assign(K, Eigen::Vector3d::Constant(std::nan("")));
   uint32_t solved = 0;
   double err = 0;
   for (size_t k = 0; k < K; ++k) {
-    PointResult& r = frame_.keypoints[k];
+    PointResult& r = person.keypoints[k];
     if (!r.valid) {
-      filters_[k].reset();
+      state.filters[k].reset();
       continue;
     }
-    raw_previous_[k] = r.position;
+    state.raw_previous[k] = r.position;
     ++solved;
     err += r.reprojection_error_px;
-    if (config_.filter) r.position = filters_[k].filter(r.position, dt);
+    if (config_.filter) r.position = state.filters[k].filter(r.position, dt);
   }
-  frame_.info.keypoints_solved = solved;
-  frame_.info.mean_reprojection_error_px = solved ? err / solved : 0;
-  derive_skeleton();
-  frame_.info.solve_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  publish();
-  return frame_.has_person();
-}
+  person.keypoints_solved = solved;
+  person.mean_reprojection_error_px = solved ? err / solved : 0;
 
-void Session::publish() {
-  for (auto& sink : sinks_) sink->publish(frame_);
-}
-
-void Session::derive_skeleton() {
   for (int j = 0; j < kJointCount; ++j) {
     for (const auto& alternative : layout_->joint_sources[j]) {
       bool all = true;
-      for (int k : alternative) all = all && frame_.keypoints[k].valid;
+      for (int k : alternative) all = all && person.keypoints[k].valid;
       if (!all) continue;
       PointResult out;
       out.valid = true;
       out.confidence = 1e9;
       out.views_used = 1u << 31;
       for (int k : alternative) {
-        const PointResult& r = frame_.keypoints[k];
+        const PointResult& r = person.keypoints[k];
         out.position += r.position / static_cast<double>(alternative.size());
         out.reprojection_error_px += r.reprojection_error_px / static_cast<double>(alternative.size());
         out.confidence = std::min(out.confidence, r.confidence);
         out.views_used = std::min(out.views_used, r.views_used);
         out.view_mask |= r.view_mask;
       }
-      frame_.joints[j] = out;
+      person.joints[j] = out;
       break;
     }
   }
   SkeletonJoints rig_joints;
   for (int j = 0; j < kJointCount; ++j) {
-    if (!frame_.joints[j].valid) {
+    if (!person.joints[j].valid) {
       rig_joints[j] = Eigen::Vector3d::Constant(std::nan(""));
       continue;
     }
-    rig_joints[j] = z_up_ ? zup_to_yup(frame_.joints[j].position) : frame_.joints[j].position;
+    rig_joints[j] = z_up_ ? zup_to_yup(person.joints[j].position) : person.joints[j].position;
   }
   auto rig_point = [&](int k) -> Eigen::Vector3d {
-    if (k < 0 || !frame_.keypoints[k].valid) return Eigen::Vector3d::Constant(std::nan(""));
-    return z_up_ ? zup_to_yup(frame_.keypoints[k].position) : frame_.keypoints[k].position;
+    if (k < 0 || !person.keypoints[k].valid) return Eigen::Vector3d::Constant(std::nan(""));
+    return z_up_ ? zup_to_yup(person.keypoints[k].position) : person.keypoints[k].position;
   };
   BodyCues cues;
   cues.head_across = rig_point(l_ear_) - rig_point(r_ear_);
   if (!cues.head_across.allFinite()) cues.head_across = rig_point(l_eye_) - rig_point(r_eye_);
   cues.head_forward = rig_point(nose_) - rig_joints[kHead];
-  frame_.bones = bone_solver_.solve(rig_joints, cues);
+  person.bones = state.bone_solver.solve(rig_joints, cues);
+}
+
+void Session::publish() {
+  for (auto& sink : sinks_) sink->publish(frame_);
 }
 
 }  // namespace octocap

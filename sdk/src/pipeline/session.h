@@ -3,6 +3,7 @@
 #pragma once
 #include <Eigen/Geometry>
 #include <array>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -17,11 +18,14 @@
 #include "rig/bone_solver.h"
 #include "solve/observation.h"
 #include "solve/one_euro.h"
+#include "solve/person_tracks.h"
 
 namespace octocap {
 
 // More 2D people than this in one view is no capture (a crowd, a detector gone wrong): refused.
 constexpr uint32_t kMaxPeoplePerView = 64;
+// The most people one frame holds (max_people = 0, "all of them").
+constexpr uint32_t kMaxPeople = 16;
 
 enum class Method : int { subdivision = 0, triangulation = 1, automatic = 2 };
 enum class UpAxis : int { y = 0, z = 1, automatic = 2 };
@@ -44,6 +48,9 @@ struct SessionConfig {
   double filter_beta = 20.0;
   unsigned threads = 0;
   int64_t first_frame_index = 0;  // frame numbers start here (a capture resumed mid-take keeps its numbering)
+  // 1: one person (the one the views agree on, followed over time); N > 1: up to N people, associated across views
+  // and tracked with stable ids; 0: as many as are there (up to kMaxPeople).
+  uint32_t max_people = 1;
   bool publish = false;           // stream every frame over DDS
   StreamConfig stream;
   uint16_t vmc_port = 0;          // 0: no VMC output
@@ -89,10 +96,12 @@ class Session {
   bool has_result() const { return solved_any_; }
   const FrameResult& result() const { return frame_; }
   const FrameInfo& frame_info() const { return frame_.info; }
-  const std::vector<PointResult>& keypoints() const { return frame_.keypoints; }
-  const std::array<PointResult, kJointCount>& joints() const { return frame_.joints; }
-  const SkeletonPose& bones() const { return frame_.bones; }
-  const std::vector<int>& selected_people() const { return frame_.selected; }
+  // Person `i` of the last frame, or the blank person (all missing) when there is no such person.
+  const PersonResult& person(size_t i = 0) const { return frame_.person_or_blank(i); }
+  const std::vector<PointResult>& keypoints() const { return person().keypoints; }
+  const std::array<PointResult, kJointCount>& joints() const { return person().joints; }
+  const SkeletonPose& bones() const { return person().bones; }
+  const std::vector<int>& selected_people() const { return person().selected; }
   const SessionConfig& config() const { return config_; }
   const Calibration& calibration() const { return calib_; }
   const KeypointLayout& keypoint_layout() const { return *layout_; }
@@ -102,8 +111,23 @@ class Session {
   Method method() const { return method_; }
 
  private:
+  // What one person carries from frame to frame: the unfiltered pose (for tracking), the filters, the rolls.
+  struct PersonState {
+    std::vector<Eigen::Vector3d> raw_previous;  // empty when unknown
+    std::vector<OneEuroFilter3> filters;
+    BoneSolver bone_solver;
+  };
+  PersonState new_person_state() const;
   PointResult solve_keypoint(const std::vector<ViewRay>& rays) const;
-  void derive_skeleton();
+  // The 3D keypoints of the person made of `choice` (the 2D person per view, -1 none), unfiltered.
+  std::vector<PointResult> solve_points(const std::vector<std::vector<Person2D>>& usable,
+                                        const std::vector<int>& choice) const;
+  // Filters the person's keypoints with its state, then derives its joints and bones.
+  void finish_person(PersonResult& person, PersonState& state, double dt) const;
+  void solve_one(const std::vector<std::vector<Person2D>>& usable, const std::vector<std::vector<int>>& original,
+                 double dt);
+  void solve_several(const std::vector<std::vector<Person2D>>& usable, const std::vector<std::vector<int>>& original,
+                     double dt, int64_t timestamp_us);
   void clear_frame();
   void publish();
 
@@ -123,9 +147,9 @@ class Session {
   std::vector<std::vector<DetectedPerson>> detections_;
   std::vector<std::vector<Person2D>> image_people_;
   FrameResult frame_;
-  std::vector<Eigen::Vector3d> raw_previous_;  // unfiltered, for person tracking; empty when unknown
-  std::vector<OneEuroFilter3> filters_;
-  BoneSolver bone_solver_;  // holds rolls across frames
+  PersonState single_;                          // max_people == 1: the one person
+  std::unique_ptr<PersonTracks> tracks_;        // max_people != 1: identities
+  std::map<uint32_t, PersonState> states_;      // max_people != 1: per track id
   // The layout's face keypoints (-1 where it has none), for the head's turn.
   int nose_ = -1, l_eye_ = -1, r_eye_ = -1, l_ear_ = -1, r_ear_ = -1;
   int64_t last_timestamp_us_ = 0;

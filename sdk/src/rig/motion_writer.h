@@ -10,15 +10,17 @@
 
 namespace octocap {
 
-enum class MotionFormat : int { trc = 0, csv = 1, bvh = 2 };
+enum class MotionFormat : int { trc = 0, csv = 1, bvh = 2, csv_people = 3 };
 
 class MotionWriter {
  public:
   // Throws Error(invalid_argument) for a rate that is not a positive, finite, sane frame rate.
   MotionWriter(std::string path, MotionFormat format, LayoutId layout, bool z_up, double rate_hz);
-  // The person's keypoints (and bones); a frame without that person is an empty frame. Throws when the frame's
-  // layout is not the writer's.
+  // The person's keypoints (and bones); a frame without that person is an empty frame (csv_people: no row).
+  // Throws when the frame's layout is not the writer's.
   void add(const FrameResult& frame, size_t person);
+  // One person of a frame of the writer's layout (a take written per tracked person).
+  void add_person(const PersonResult& person, int64_t frame_index = 0);
   // Layout keypoints given directly (NaN where missing); not for BVH.
   void add_keypoints(const std::vector<Eigen::Vector3d>& keypoints);
   void add_empty();

@@ -55,7 +55,7 @@ void VmcSender::send(const FrameResult& frame) {
   immediate.sec = 0;
   immediate.frac = 1;
   lo_bundle bundle = lo_bundle_new(immediate);
-  const SkeletonPose& pose = frame.bones;
+  const SkeletonPose& pose = frame.person_or_blank(0).bones;  // VMC drives one avatar: the first person
   const bool ok = pose[kBoneRoot].valid;
   lo_message status = lo_message_new();
   lo_message_add_int32(status, ok ? 1 : 0);

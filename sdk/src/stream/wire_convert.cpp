@@ -58,13 +58,15 @@ void copy_name(char (&dst)[32], const char* src) {
 }  // namespace
 
 void fill_pose(const FrameResult& frame, uint32_t source_id, uint32_t definition_counter, PoseBuffers& out) {
-  out.keypoints.resize(frame.keypoints.size());
-  for (size_t k = 0; k < frame.keypoints.size(); ++k) to_wire(frame.keypoints[k], out.keypoints[k]);
+  // The wire's Pose carries one person: the first (lowest id) of the frame.
+  const PersonResult& person = frame.person_or_blank(0);
+  out.keypoints.resize(person.keypoints.size());
+  for (size_t k = 0; k < person.keypoints.size(); ++k) to_wire(person.keypoints[k], out.keypoints[k]);
   out.joints.resize(kJointCount);
-  for (int j = 0; j < kJointCount; ++j) to_wire(frame.joints[j], out.joints[j]);
+  for (int j = 0; j < kJointCount; ++j) to_wire(person.joints[j], out.joints[j]);
   out.bones.resize(kBoneCount);
   for (int b = 0; b < kBoneCount; ++b) {
-    const BonePose& p = frame.bones[b];
+    const BonePose& p = person.bones[b];
     octocap_wire_BoneSample& s = out.bones[b];
     s = octocap_wire_BoneSample{};
     quat_to(p.local, s.local_rotation);
@@ -102,17 +104,18 @@ bool read_pose(const octocap_wire_Pose& in, LayoutId layout_id, FrameResult& out
     return false;
   }
   out.layout = layout_id;
-  out.keypoints.resize(K);
+  PersonResult person;
+  person.keypoints.resize(K);
   uint32_t solved = 0;
   for (size_t k = 0; k < K; ++k) {
-    if (!from_wire(in.keypoints._buffer[k], out.keypoints[k])) {
+    if (!from_wire(in.keypoints._buffer[k], person.keypoints[k])) {
       why = "non-finite keypoint";
       return false;
     }
-    solved += out.keypoints[k].valid;
+    solved += person.keypoints[k].valid;
   }
   for (int j = 0; j < kJointCount; ++j)
-    if (!from_wire(in.joints._buffer[j], out.joints[j])) {
+    if (!from_wire(in.joints._buffer[j], person.joints[j])) {
       why = "non-finite joint";
       return false;
     }
@@ -123,7 +126,7 @@ bool read_pose(const octocap_wire_Pose& in, LayoutId layout_id, FrameResult& out
       why = "non-finite bone";
       return false;
     }
-    BonePose& p = out.bones[b];
+    BonePose& p = person.bones[b];
     p.local = quat_from(s.local_rotation);
     p.global = quat_from(s.global_rotation);
     p.head = Eigen::Vector3d(s.head_position[0], s.head_position[1], s.head_position[2]);
@@ -141,7 +144,13 @@ bool read_pose(const octocap_wire_Pose& in, LayoutId layout_id, FrameResult& out
   out.info.mean_reprojection_error_px = in.mean_reprojection_error_px;
   out.info.views_with_person = in.views_with_person;
   out.info.solve_ms = 0;
-  out.selected.clear();
+  person.keypoints_solved = solved;
+  person.views_with_person = in.views_with_person;
+  person.mean_reprojection_error_px = in.mean_reprojection_error_px;
+  out.people.clear();
+  out.blank = PersonResult{};
+  out.blank.keypoints.assign(K, PointResult{});
+  if (person.has_pose()) out.people.push_back(std::move(person));
   return true;
 }
 

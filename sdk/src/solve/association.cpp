@@ -1,0 +1,159 @@
+#include "solve/association.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "solve/view_agreement.h"
+
+namespace octocap {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// The body's place: the median of its known keypoints per axis (robust to a stray keypoint).
+bool body_centre(const std::vector<Eigen::Vector3d>& pose, Eigen::Vector3d& out) {
+  std::vector<double> axis[3];
+  for (const Eigen::Vector3d& p : pose)
+    if (p.allFinite())
+      for (int a = 0; a < 3; ++a) axis[a].push_back(p[a]);
+  if (axis[0].size() < 3) return false;
+  for (int a = 0; a < 3; ++a) {
+    auto mid = axis[a].begin() + static_cast<std::ptrdiff_t>(axis[a].size() / 2);
+    std::nth_element(axis[a].begin(), mid, axis[a].end());
+    out[a] = *mid;
+  }
+  return true;
+}
+
+class Associator {
+ public:
+  Associator(const Calibration& calib, const std::vector<std::vector<Person2D>>& people, const AssociationParams& p)
+      : calib_(calib), people_(people), params_(p), used_(people.size()) {
+    for (size_t v = 0; v < people.size(); ++v) used_[v].assign(people[v].size(), false);
+  }
+
+  // Gives each prior its nearest people (nearest pairs first over all priors and views), then keeps what agrees.
+  void continue_priors(const std::vector<std::vector<Eigen::Vector3d>>& priors) {
+    struct Pair {
+      double d;
+      size_t prior, view;
+      int person;
+    };
+    std::vector<Pair> pairs;
+    for (size_t t = 0; t < priors.size(); ++t)
+      for (size_t v = 0; v < people_.size(); ++v)
+        for (size_t p = 0; p < people_[v].size(); ++p) {
+          // Between two frames a person moves: more room than the association threshold.
+          const double d = distance_to_pose(calib_[v], people_[v][p], priors[t], params_.min_confidence);
+          if (d <= 3 * params_.threshold_px) pairs.push_back({d, t, v, static_cast<int>(p)});
+        }
+    std::sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) { return a.d < b.d; });
+    std::vector<std::vector<int>> choice(priors.size(), std::vector<int>(people_.size(), -1));
+    std::vector<std::vector<bool>> taken = used_;
+    for (const Pair& p : pairs) {
+      if (choice[p.prior][p.view] >= 0 || taken[p.view][p.person]) continue;
+      choice[p.prior][p.view] = p.person;
+      taken[p.view][p.person] = true;
+    }
+    for (size_t t = 0; t < priors.size(); ++t) accept(choice[t], static_cast<int>(t));
+  }
+
+  // Groups the people no prior took: pairs of views that agree seed a person, grown by the other views.
+  void find_new_people() {
+    const size_t V = people_.size();
+    struct Seed {
+      double cost;
+      std::vector<int> choice;
+    };
+    std::vector<Seed> seeds;
+    for (size_t a = 0; a < V; ++a)
+      for (size_t b = a + 1; b < V; ++b)
+        for (size_t pa = 0; pa < people_[a].size(); ++pa)
+          for (size_t pb = 0; pb < people_[b].size(); ++pb) {
+            if (used_[a][pa] || used_[b][pb]) continue;
+            std::vector<int> trial(V, -1);
+            trial[a] = static_cast<int>(pa);
+            trial[b] = static_cast<int>(pb);
+            const auto errs = combination_errors(calib_, people_, trial, params_.min_confidence);
+            const double cost = std::max(errs[a], errs[b]);
+            if (cost <= params_.threshold_px) seeds.push_back({cost, std::move(trial)});
+          }
+    std::sort(seeds.begin(), seeds.end(), [](const Seed& x, const Seed& y) { return x.cost < y.cost; });
+    for (const Seed& seed : seeds) {
+      bool free = true;
+      for (size_t v = 0; v < V; ++v)
+        if (seed.choice[v] >= 0 && used_[v][seed.choice[v]]) free = false;
+      if (!free) continue;
+      std::vector<Eigen::Vector3d> pose;
+      combination_errors(calib_, people_, seed.choice, params_.min_confidence, &pose);
+      std::vector<int> choice = seed.choice;
+      for (size_t v = 0; v < V; ++v) {
+        if (choice[v] >= 0) continue;
+        double nearest = kInf;
+        for (size_t p = 0; p < people_[v].size(); ++p) {
+          if (used_[v][p]) continue;
+          const double d = distance_to_pose(calib_[v], people_[v][p], pose, params_.min_confidence);
+          if (d < nearest) nearest = d, choice[v] = static_cast<int>(p);
+        }
+        if (!(nearest <= 2 * params_.threshold_px)) choice[v] = -1;
+      }
+      accept(choice, -1);
+    }
+  }
+
+  std::vector<PersonCluster> take() {
+    // Most views first (then priors first): the people best seen survive the cap.
+    std::stable_sort(clusters_.begin(), clusters_.end(), [](const PersonCluster& a, const PersonCluster& b) {
+      const auto seen = [](const PersonCluster& c) { return std::count_if(c.choice.begin(), c.choice.end(), [](int p) { return p >= 0; }); };
+      return seen(a) > seen(b);
+    });
+    if (clusters_.size() > params_.max_people) clusters_.resize(params_.max_people);
+    return std::move(clusters_);
+  }
+
+ private:
+  // Keeps the views of `choice` that agree with the rest; a person of at least min_views views inside the volume
+  // becomes a cluster and its 2D people are used up. (Dropping the worst view can change the others' errors, so it
+  // is done one view at a time.)
+  void accept(std::vector<int> choice, int prior) {
+    std::vector<Eigen::Vector3d> pose;
+    for (;;) {
+      const auto errs = combination_errors(calib_, people_, choice, params_.min_confidence, &pose);
+      int worst = -1, seen = 0;
+      for (size_t v = 0; v < choice.size(); ++v) {
+        if (choice[v] < 0) continue;
+        ++seen;
+        if (errs[v] > params_.threshold_px && (worst < 0 || errs[v] > errs[worst])) worst = static_cast<int>(v);
+      }
+      if (seen < params_.min_views) return;
+      if (worst < 0) break;
+      choice[worst] = -1;
+    }
+    Eigen::Vector3d centre;
+    if (!body_centre(pose, centre)) return;
+    if (!params_.volume.isEmpty() && !params_.volume.contains(centre)) return;  // a bystander outside the volume
+    for (size_t v = 0; v < choice.size(); ++v)
+      if (choice[v] >= 0) used_[v][choice[v]] = true;
+    clusters_.push_back({std::move(choice), prior, std::move(pose)});
+  }
+
+  const Calibration& calib_;
+  const std::vector<std::vector<Person2D>>& people_;
+  const AssociationParams& params_;
+  std::vector<std::vector<bool>> used_;
+  std::vector<PersonCluster> clusters_;
+};
+
+}  // namespace
+
+std::vector<PersonCluster> associate_people(const Calibration& calib, const std::vector<std::vector<Person2D>>& people,
+                                            const std::vector<std::vector<Eigen::Vector3d>>& priors,
+                                            const AssociationParams& params) {
+  Associator a(calib, people, params);
+  a.continue_priors(priors);
+  a.find_new_people();
+  return a.take();
+}
+
+}  // namespace octocap
