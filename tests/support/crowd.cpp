@@ -1,4 +1,4 @@
-#include "support/crowd.h"
+#include "crowd.h"
 
 #include <algorithm>
 #include <cmath>

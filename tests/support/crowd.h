@@ -5,7 +5,7 @@
 #include <random>
 #include <vector>
 
-#include "support/synth.h"
+#include "synth.h"
 
 namespace octocap::synth {
 

@@ -273,6 +273,7 @@ void Session::solve_several(const std::vector<std::vector<Person2D>>& usable,
   params.min_confidence = config_.min_confidence;
   params.threshold_px = 2 * config_.outlier_threshold_px;
   params.min_views = config_.min_views;
+  params.birth_views = std::min(3, static_cast<int>(V));
   params.max_people = config_.max_people == 0 ? kMaxPeople : config_.max_people;
   params.volume = volume_;
   const std::vector<PersonCluster> clusters = associate_people(calib_, usable, tracks_->priors(timestamp_us), params);

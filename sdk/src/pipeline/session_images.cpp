@@ -10,12 +10,14 @@ namespace octocap {
 std::vector<Person2D> Session::reprojected_keypoints() const {
   std::vector<Person2D> hints(calib_.size());
   if (!solved_any_ || frame_.info.keypoints_solved == 0) return hints;
+  // The detector follows one person per view: the first (lowest id).
+  const std::vector<PointResult>& keypoints = frame_.person_or_blank(0).keypoints;
   for (size_t v = 0; v < calib_.size(); ++v) {
     Person2D& p = hints[v];
-    p.resize(frame_.keypoints.size());
-    for (size_t k = 0; k < frame_.keypoints.size(); ++k) {
-      if (!frame_.keypoints[k].valid) continue;
-      const Eigen::Vector2d px = calib_[v].project(frame_.keypoints[k].position);
+    p.resize(keypoints.size());
+    for (size_t k = 0; k < keypoints.size(); ++k) {
+      if (!keypoints[k].valid) continue;
+      const Eigen::Vector2d px = calib_[v].project(keypoints[k].position);
       if (std::isfinite(px.x()) && std::isfinite(px.y())) p[k] = {px.x(), px.y(), 1.0};
     }
   }

@@ -56,7 +56,7 @@ class Associator {
       choice[p.prior][p.view] = p.person;
       taken[p.view][p.person] = true;
     }
-    for (size_t t = 0; t < priors.size(); ++t) accept(choice[t], static_cast<int>(t));
+    for (size_t t = 0; t < priors.size(); ++t) accept(choice[t], static_cast<int>(t), params_.min_views);
   }
 
   // Groups the people no prior took: pairs of views that agree seed a person, grown by the other views.
@@ -98,7 +98,15 @@ class Associator {
         }
         if (!(nearest <= 2 * params_.threshold_px)) choice[v] = -1;
       }
-      accept(choice, -1);
+      // The same body as a person already found: its views join that person where it has none.
+      if (PersonCluster* same = same_body(choice)) {
+        std::vector<int> merged = same->choice;
+        for (size_t v = 0; v < V; ++v)
+          if (merged[v] < 0) merged[v] = choice[v];
+        if (merged != same->choice) regrow(*same, merged);
+        continue;
+      }
+      accept(choice, -1, std::max(params_.min_views, params_.birth_views));
     }
   }
 
@@ -113,11 +121,51 @@ class Associator {
   }
 
  private:
-  // Keeps the views of `choice` that agree with the rest; a person of at least min_views views inside the volume
+  // Keeps the views of `choice` that agree with the rest; a person of at least `min_views` views inside the volume
   // becomes a cluster and its 2D people are used up. (Dropping the worst view can change the others' errors, so it
   // is done one view at a time.)
-  void accept(std::vector<int> choice, int prior) {
+  void accept(std::vector<int> choice, int prior, int min_views) {
     std::vector<Eigen::Vector3d> pose;
+    if (!agreeing(choice, pose, min_views)) return;
+    Eigen::Vector3d centre;
+    if (!body_centre(pose, centre)) return;
+    if (!params_.volume.isEmpty() && !params_.volume.contains(centre)) return;  // a bystander outside the volume
+    for (size_t v = 0; v < choice.size(); ++v)
+      if (choice[v] >= 0) used_[v][choice[v]] = true;
+    clusters_.push_back({std::move(choice), prior, std::move(pose)});
+  }
+
+  // A cluster grown by more views: kept when they agree with it (the views it had are never lost).
+  void regrow(PersonCluster& cluster, std::vector<int> choice) {
+    std::vector<Eigen::Vector3d> pose;
+    if (!agreeing(choice, pose, params_.min_views)) return;
+    for (size_t v = 0; v < choice.size(); ++v)
+      if (cluster.choice[v] >= 0 && choice[v] != cluster.choice[v]) return;
+    for (size_t v = 0; v < choice.size(); ++v)
+      if (choice[v] >= 0) used_[v][choice[v]] = true;
+    cluster.choice = std::move(choice);
+    cluster.pose = std::move(pose);
+  }
+
+  // The cluster whose body this choice's triangulation lies on: most keypoints within 15 cm (two people's bodies are
+  // never that close everywhere, even in an embrace).
+  PersonCluster* same_body(const std::vector<int>& choice) {
+    std::vector<Eigen::Vector3d> pose;
+    combination_errors(calib_, people_, choice, params_.min_confidence, &pose);
+    for (PersonCluster& c : clusters_) {
+      int near = 0, shared = 0;
+      for (size_t k = 0; k < pose.size() && k < c.pose.size(); ++k) {
+        if (!pose[k].allFinite() || !c.pose[k].allFinite()) continue;
+        ++shared;
+        near += (pose[k] - c.pose[k]).norm() < 0.15;
+      }
+      if (shared >= 3 && near * 2 > shared) return &c;
+    }
+    return nullptr;
+  }
+
+  // Drops the views of `choice` that disagree with the rest, worst first; true when `min_views` remain.
+  bool agreeing(std::vector<int>& choice, std::vector<Eigen::Vector3d>& pose, int min_views) const {
     for (;;) {
       const auto errs = combination_errors(calib_, people_, choice, params_.min_confidence, &pose);
       int worst = -1, seen = 0;
@@ -126,16 +174,10 @@ class Associator {
         ++seen;
         if (errs[v] > params_.threshold_px && (worst < 0 || errs[v] > errs[worst])) worst = static_cast<int>(v);
       }
-      if (seen < params_.min_views) return;
-      if (worst < 0) break;
+      if (seen < min_views) return false;
+      if (worst < 0) return true;
       choice[worst] = -1;
     }
-    Eigen::Vector3d centre;
-    if (!body_centre(pose, centre)) return;
-    if (!params_.volume.isEmpty() && !params_.volume.contains(centre)) return;  // a bystander outside the volume
-    for (size_t v = 0; v < choice.size(); ++v)
-      if (choice[v] >= 0) used_[v][choice[v]] = true;
-    clusters_.push_back({std::move(choice), prior, std::move(pose)});
   }
 
   const Calibration& calib_;

@@ -28,7 +28,7 @@ double distance_to_pose(const Camera& cam, const Person2D& person, const std::ve
 
 std::vector<double> combination_errors(const Calibration& calib, const std::vector<std::vector<Person2D>>& people,
                                        const std::vector<int>& choice, double min_conf,
-                                       std::vector<Eigen::Vector3d>* pose = nullptr) {
+                                       std::vector<Eigen::Vector3d>* pose) {
   const size_t V = calib.size();
   size_t K = 0;
   for (size_t v = 0; v < V; ++v)

@@ -1,0 +1,196 @@
+// `octocap solve --people`: several people from OpenPose JSON (synthetic, known truth) and from Pose2Sim's real
+// two-person videos (detected here), through the command line as a user runs it.
+#include <catch2/catch_test_macros.hpp>
+#include <catch2/matchers/catch_matchers_string.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <random>
+#include <regex>
+#include <sstream>
+
+#include "crowd.h"
+#include "io/calibration_toml.h"
+#include "io/motion_files.h"
+#include "io/openpose_json.h"
+#include "support/run_command.h"
+#include "support/temp_dir.h"
+
+using Catch::Matchers::ContainsSubstring;
+using namespace octocap;
+namespace fs = std::filesystem;
+
+namespace {
+
+// The per-person CSV: rows[person id][frame] = keypoints (NaN where empty), and the header's keypoint names.
+struct PeopleCsv {
+  std::vector<std::string> names;
+  std::map<uint32_t, std::map<int64_t, std::vector<Eigen::Vector3d>>> rows;
+};
+
+PeopleCsv read_people_csv(const std::string& path) {
+  std::ifstream in(path);
+  REQUIRE(in);
+  PeopleCsv out;
+  std::string line, cell;
+  std::getline(in, line);
+  std::istringstream header(line);
+  std::vector<std::string> cells;
+  while (std::getline(header, cell, ',')) cells.push_back(cell);
+  REQUIRE(cells.size() >= 5);
+  REQUIRE(cells[0] == "frame");
+  REQUIRE(cells[1] == "person");
+  for (size_t i = 2; i + 2 < cells.size(); i += 3) out.names.push_back(cells[i].substr(0, cells[i].size() - 2));
+  while (std::getline(in, line)) {
+    std::vector<std::string> c;
+    std::istringstream row(line);
+    while (std::getline(row, cell, ',')) c.push_back(cell);
+    while (c.size() < 2 + 3 * out.names.size()) c.emplace_back();
+    std::vector<Eigen::Vector3d> kp;
+    for (size_t k = 0; k < out.names.size(); ++k) {
+      const std::string& x = c[2 + 3 * k];
+      kp.push_back(x.empty() ? Eigen::Vector3d::Constant(NAN)
+                             : Eigen::Vector3d(std::stod(x), std::stod(c[3 + 3 * k]), std::stod(c[4 + 3 * k])));
+    }
+    out.rows[static_cast<uint32_t>(std::stoul(c[1]))][std::stoll(c[0])] = kp;
+  }
+  return out;
+}
+
+Eigen::Vector3d centre(const std::vector<Eigen::Vector3d>& kp) {
+  Eigen::Vector3d s = Eigen::Vector3d::Zero();
+  int n = 0;
+  for (const auto& p : kp)
+    if (p.allFinite()) s += p, ++n;
+  return s / std::max(n, 1);
+}
+
+}  // namespace
+
+TEST_CASE("octocap solve --people auto: one TRC per person, a CSV with a person column, against the truth",
+          "[people][cli]") {
+  testing::TempDir dir;
+  synth::RigOptions rig;
+  rig.cameras = 5;
+  const Calibration calib = synth::make_camera_ring(rig);
+  write_calibration_toml(calib, dir.file("calibration.toml"));
+  const auto crowd = synth::make_crowd(3, 40);
+  std::mt19937 rng(6);
+  for (size_t f = 0; f < 40; ++f) {
+    std::vector<std::vector<Eigen::Vector3d>> now{crowd[0][f], crowd[1][f], crowd[2][f]};
+    const synth::CrowdObservation obs = synth::observe_crowd(calib, now, LayoutId::body25, {}, rng);
+    for (size_t v = 0; v < calib.size(); ++v) {
+      const fs::path folder = fs::path(dir.file("keypoints")) / (calib[v].name + "_json");
+      fs::create_directories(folder);
+      char name[32];
+      std::snprintf(name, sizeof name, "%06zu.json", f);
+      write_openpose_file((folder / name).string(), obs.views[v]);
+    }
+  }
+  const testing::Run r = testing::run_command(std::string(OCTOCAP_CLI_PATH) + " solve --calibration " +
+                                              dir.file("calibration.toml") + " --keypoints " + dir.file("keypoints") +
+                                              " --output " + dir.file("take.trc") + " --csv " + dir.file("take.csv") +
+                                              " --bvh " + dir.file("take.bvh") + " --people auto --filter none --quiet");
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  CHECK_THAT(r.output, ContainsSubstring("3 tracked"));
+  CHECK_FALSE(fs::exists(dir.file("take.trc")));  // several people: a file per person instead
+  const PeopleCsv csv = read_people_csv(dir.file("take.csv"));
+  REQUIRE(csv.rows.size() == 3);
+  for (const auto& [id, frames] : csv.rows) {
+    INFO("person " << id);
+    // The person's own files, as long as the take.
+    const MotionTrack trc = read_trc(dir.file("take_person" + std::to_string(id) + ".trc"));
+    CHECK(trc.frames.size() == 40);
+    CHECK(fs::file_size(dir.file("take_person" + std::to_string(id) + ".bvh")) > 1000);
+    CHECK(frames.size() >= 38);
+    // One true person all along, within centimetres (the CSV is in the calibration's world, as the truth).
+    std::map<size_t, int> who;
+    double err = 0;
+    int n = 0;
+    for (const auto& [f, kp] : frames) {
+      size_t best = 0;
+      double best_d = INFINITY;
+      for (size_t t = 0; t < 3; ++t) {
+        const double d = (centre(kp) - centre(crowd[t][f])).norm();
+        if (d < best_d) best_d = d, best = t;
+      }
+      ++who[best];
+      for (size_t k = 0; k < kp.size(); ++k)
+        if (kp[k].allFinite()) err += (kp[k] - crowd[best][f][k]).norm(), ++n;
+    }
+    CHECK(who.size() == 1);
+    CHECK(1000 * err / n < 20);
+  }
+}
+
+#ifdef OCTOCAP_HAVE_ONNXRUNTIME  // the detector
+TEST_CASE("octocap solve --people auto on Pose2Sim's real two-person videos: two people, no identity switch",
+          "[people][cli][real]") {
+  testing::TempDir dir;
+  const std::string videos = std::string(OCTOCAP_SOURCE_DIR) + "/.cache/pose2sim-0.10.49/Demo_MultiPerson/videos";
+  const std::string calib = std::string(OCTOCAP_REAL_DATA_DIR) + "/Demo/calibration/Calib_qualisys.toml";
+  const testing::Run r = testing::run_command(std::string(OCTOCAP_CLI_PATH) + " solve --images " + videos +
+                                              " --calibration " + calib + " --output " + dir.file("take.trc") +
+                                              " --csv " + dir.file("take.csv") +
+                                              " --people auto --model movenet-multipose --detect-mode per-view --quiet");
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  const PeopleCsv csv = read_people_csv(dir.file("take.csv"));
+  // Two people move close together, one often hiding the other, a bystander stands in the background: exactly two
+  // tracked people for the whole take.
+  REQUIRE(csv.rows.size() == 2);
+  auto index = [&](const char* name) {
+    for (size_t k = 0; k < csv.names.size(); ++k)
+      if (csv.names[k] == name) return k;
+    FAIL("no keypoint " << name);
+    return size_t{0};
+  };
+  const size_t lhip = index("LHip"), lknee = index("LKnee"), rhip = index("RHip"), rknee = index("RKnee");
+  std::map<uint32_t, std::vector<double>> thighs;
+  for (const auto& [id, frames] : csv.rows) {
+    INFO("person " << id);
+    CHECK(frames.size() >= 95);
+    // Continuity: between two frames (60 Hz) a body moves centimetres; the other person is never nearer than ~0.8 m,
+    // so a switch of identities would jump by that much.
+    double worst = 0;
+    for (auto it = frames.begin(); std::next(it) != frames.end(); ++it)
+      worst = std::max(worst, (centre(std::next(it)->second) - centre(it->second)).norm());
+    CHECK(worst < 0.4);
+    for (const auto& [f, kp] : frames)
+      for (auto [a, b] : {std::pair{lhip, lknee}, std::pair{rhip, rknee}})
+        if (kp[a].allFinite() && kp[b].allFinite()) thighs[id].push_back((kp[a] - kp[b]).norm());
+  }
+  // Bone lengths: the two people have different builds, and each keeps its own all along (a switch would mix them).
+  std::vector<double> medians;
+  for (auto& [id, t] : thighs) {
+    REQUIRE(t.size() >= 100);
+    std::sort(t.begin(), t.end());
+    medians.push_back(t[t.size() / 2]);
+  }
+  CHECK(std::abs(medians[0] - medians[1]) > 0.05);
+  size_t i = 0;
+  for (auto& [id, t] : thighs) {
+    const double own = medians[i], other = medians[1 - i];
+    size_t closer = 0;
+    for (double l : t) closer += std::abs(l - own) < std::abs(l - other);
+    INFO("person " << id << ": thigh " << own << " m, the other's " << other);
+    CHECK(closer >= 0.9 * t.size());
+    ++i;
+  }
+  // Each person as well solved as the single-person take is (6.4-6.9 px median reprojection there).
+  std::smatch m;
+  std::string out = r.output;
+  const std::regex person_line("person +([0-9]+) +([0-9]+) keypoints solved, reprojection error median ([0-9.]+) px");
+  int people = 0;
+  while (std::regex_search(out, m, person_line)) {
+    CHECK(std::stod(m[3]) < 8.0);
+    CHECK(std::stoi(m[2]) >= 100 * 17 * 0.75);
+    ++people;
+    out = m.suffix();
+  }
+  CHECK(people == 2);
+}
+#endif
