@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "live_common.h"
+#include "take_writers.h"
 #include "octocap/octocap.hpp"
 
 namespace {
@@ -35,6 +36,7 @@ int live(const LiveOptions& o) {
                 : o.method == "subdivision"  ? OCTOCAP_METHOD_SUBDIVISION
                                              : OCTOCAP_METHOD_AUTO;
   scfg.filter = o.filter == "none" ? OCTOCAP_FILTER_NONE : OCTOCAP_FILTER_ONE_EURO;
+  scfg.max_people = max_people_of(o.people);
   apply_outputs(o.out, scfg);
   octocap::Live capture(cfg, scfg, calib, o.cameras);
   capture.set_detector(o.detector.config());
@@ -48,12 +50,8 @@ int live(const LiveOptions& o) {
     quiet.vmc_port = 0;
     up = octocap::Session(quiet, calib).up_axis();
   }
-  std::vector<octocap::MotionWriter> writers;
   // A live take's rate is the cameras'; the files say the nominal one, the frames keep their real timestamps.
-  const double rate = o.picture_rate_hz;
-  if (!o.output.empty()) writers.emplace_back(o.output, OCTOCAP_MOTION_TRC, OCTOCAP_LAYOUT_COCO_17, up, rate);
-  if (!o.csv.empty()) writers.emplace_back(o.csv, OCTOCAP_MOTION_CSV, OCTOCAP_LAYOUT_COCO_17, up, rate);
-  if (!o.bvh.empty()) writers.emplace_back(o.bvh, OCTOCAP_MOTION_BVH, OCTOCAP_LAYOUT_COCO_17, up, rate);
+  TakeWriters writers(o.output, o.csv, o.bvh, OCTOCAP_LAYOUT_COCO_17, up, o.picture_rate_hz, scfg.max_people != 1);
 
   live_common::catch_interrupts();
   capture.start();
@@ -66,7 +64,7 @@ int live(const LiveOptions& o) {
     std::optional<octocap::Frame> frame = capture.take(200);
     if (frame) {
       ++taken;
-      for (octocap::MotionWriter& w : writers) w.add(*frame, 0);
+      writers.add(*frame);
     }
     const octocap_live_stats_t s = capture.stats();
     if (!frame && s.finished) break;  // every camera played out
@@ -79,7 +77,7 @@ int live(const LiveOptions& o) {
   }
   capture.stop();
   if (!o.quiet) std::fprintf(stderr, "\n");
-  for (octocap::MotionWriter& w : writers) w.close();
+  writers.close();
   const octocap_live_stats_t s = capture.stats();
   std::printf("octocap live: %u cameras, %llu frame sets solved (%llu with a person, %llu without every camera), "
               "%llu frames taken\n",
@@ -99,7 +97,7 @@ int live(const LiveOptions& o) {
     if (o.cameras[c].rfind("dds://", 0) == 0) std::printf(", %s, clock offset %.1f ms", o.cameras[c].c_str(), cam.clock_offset_ms);
     std::printf("\n");
   }
-  if (!o.output.empty()) std::printf("  wrote %s\n", o.output.c_str());
+  if (!o.output.empty() || !o.csv.empty() || !o.bvh.empty()) std::printf("  wrote %s\n", writers.written().c_str());
   if (!o.record.empty())
     std::printf("  recorded %llu frame sets into %s (pictures left out of %llu: the disk was behind)\n",
                 static_cast<unsigned long long>(s.sets_recorded), o.record.c_str(),

@@ -16,6 +16,7 @@ struct LiveOptions {
   std::string filter = "oneeuro";
   bool quiet = false;
   OutputOptions out;
+  std::string people = "1";  // as octocap solve --people
 };
 
 int run_live(const LiveOptions& options);

@@ -34,6 +34,11 @@ void add_output_options(CLI::App* app, OutputOptions& o) {
 
 }  // namespace
 
+void add_people_option(CLI::App* app, std::string& people) {
+  app->add_option("--people", people, "People to solve: 1 (the one the views agree on), N (up to N, tracked with ids), or auto (everyone in the volume, up to 16); with several, OUT.trc becomes OUT_person<ID>.trc (BVH too) and the CSV has a person column")
+      ->check(CLI::IsMember({"auto"}) | CLI::Range(1, 16))->capture_default_str();
+}
+
 int main(int argc, char** argv) {
   CLI::App app{"octocap: markerless multi-camera motion capture"};
   app.require_subcommand(1);
@@ -59,7 +64,7 @@ int main(int argc, char** argv) {
   sc->add_option("--up", solve.up, "World up axis of the calibration")->check(CLI::IsMember({"auto", "y", "z"}))->capture_default_str();
   sc->add_option("--rate", solve.rate_hz, "Frame rate of the recording, Hz")->check(CLI::PositiveNumber)->capture_default_str();
   sc->add_option("--threads", solve.threads, "Worker threads (0: all cores)")->capture_default_str();
-  sc->add_option("--people", solve.people, "People to solve: 1 (the one the views agree on), N (up to N, tracked with ids), or auto (everyone in the volume); with several, OUT.trc becomes OUT_person<ID>.trc and the CSV has a person column")->check(CLI::IsMember({"auto"}) | CLI::Range(1, 16))->capture_default_str();
+  add_people_option(sc, solve.people);
   sc->add_option("--sync", solve.sync, "Sync TOML (octocap sync): each camera's keypoints taken at its own time offset")->check(CLI::ExistingFile);
   sc->add_option("--ground-truth", solve.ground_truth, "CSV of true 3D keypoints: report the error against it")->check(CLI::ExistingFile);
   sc->add_flag("--quiet", solve.quiet, "No progress on stderr");
@@ -103,6 +108,7 @@ int main(int argc, char** argv) {
   lv->add_option("--filter", live.filter, "Temporal filter")->check(CLI::IsMember({"none", "oneeuro"}))->capture_default_str();
   add_output_options(lv, live.out);
   lv->add_flag("--quiet", live.quiet, "No status line on stderr");
+  add_people_option(lv, live.people);
   add_detector_options(lv, live.detector);
 
   SyncOptions sync;

@@ -18,6 +18,7 @@
 
 #include "debug_draw.h"
 #include "ground_truth.h"
+#include "take_writers.h"
 #include "image_source.h"
 #include "octocap/octocap.hpp"
 
@@ -64,64 +65,6 @@ void write_debug_images(const octocap::Session& session, const octocap_calibrati
     cv::imwrite(debug_image_path(dir, cam.name, frame), images[v]);
   }
 }
-
-// OUT.trc -> OUT_person<ID>.trc: each tracked person's take, aligned with the recording's frames (empty frames where
-// the person was not there).
-std::string person_path(const std::string& path, uint32_t id) {
-  const std::filesystem::path p(path);
-  return (p.parent_path() / (p.stem().string() + "_person" + std::to_string(id) + p.extension().string())).string();
-}
-
-// One TRC (and BVH) per person id, opened when the person first appears.
-class PeopleWriters {
- public:
-  PeopleWriters(std::string trc, std::string bvh, octocap_layout_t layout, octocap_up_axis_t up, double rate)
-      : trc_(std::move(trc)), bvh_(std::move(bvh)), layout_(layout), up_(up), rate_(rate) {}
-
-  void add(const octocap::Frame& frame) {
-    std::vector<bool> added(takes_.size(), false);
-    for (uint32_t i = 0; i < frame.person_count(); ++i) {
-      const uint32_t id = frame.person(i).id;
-      size_t t = 0;
-      while (t < takes_.size() && takes_[t].id != id) ++t;
-      if (t == takes_.size()) {
-        takes_.push_back(Take{id, {}});
-        takes_[t].writers.emplace_back(person_path(trc_, id), OCTOCAP_MOTION_TRC, layout_, up_, rate_);
-        if (!bvh_.empty()) takes_[t].writers.emplace_back(person_path(bvh_, id), OCTOCAP_MOTION_BVH, layout_, up_, rate_);
-        for (size_t f = 0; f < frames_; ++f)
-          for (octocap::MotionWriter& w : takes_[t].writers) w.add_empty();
-        added.push_back(false);
-      }
-      for (octocap::MotionWriter& w : takes_[t].writers) w.add(frame, i);
-      added[t] = true;
-    }
-    for (size_t t = 0; t < takes_.size(); ++t)
-      if (!added[t])
-        for (octocap::MotionWriter& w : takes_[t].writers) w.add_empty();
-    ++frames_;
-  }
-  void close() {
-    for (Take& t : takes_)
-      for (octocap::MotionWriter& w : t.writers) w.close();
-  }
-  std::string written() const {
-    std::string s;
-    for (const Take& t : takes_) s += (s.empty() ? "" : ", ") + person_path(trc_, t.id);
-    return s.empty() ? "no person file (nobody was solved)" : s;
-  }
-
- private:
-  struct Take {
-    uint32_t id;
-    std::vector<octocap::MotionWriter> writers;
-  };
-  std::string trc_, bvh_;
-  octocap_layout_t layout_;
-  octocap_up_axis_t up_;
-  double rate_;
-  std::vector<Take> takes_;
-  size_t frames_ = 0;
-};
 
 int solve(const SolveOptions& o) {
   octocap_set_log_callback(log_to_stderr, OCTOCAP_LOG_WARNING, nullptr);
@@ -174,7 +117,7 @@ int solve(const SolveOptions& o) {
   cfg.delta_m = static_cast<float>(o.delta_mm / 1000.0);
   cfg.worker_threads = o.threads;
   cfg.first_frame_index = o.start_frame;
-  cfg.max_people = o.people == "auto" ? 0u : static_cast<uint32_t>(std::stoul(o.people));
+  cfg.max_people = max_people_of(o.people);
   const bool several = cfg.max_people != 1;
   apply_outputs(o.out, cfg);
   if (!o.debug_images.empty()) std::filesystem::create_directories(o.debug_images);
@@ -184,15 +127,7 @@ int solve(const SolveOptions& o) {
   const std::string method_name = session.method() == OCTOCAP_METHOD_TRIANGULATION ? "triangulation" : "subdivision";
 
   // Each file is written when closed at the end; a take that fails on the way leaves none behind.
-  std::vector<octocap::MotionWriter> writers;
-  PeopleWriters people_writers(o.output, o.bvh, layout, up, o.rate_hz);
-  if (several) {
-    if (!o.csv.empty()) writers.emplace_back(o.csv, OCTOCAP_MOTION_CSV_PEOPLE, layout, up, o.rate_hz);
-  } else {
-    writers.emplace_back(o.output, OCTOCAP_MOTION_TRC, layout, up, o.rate_hz);
-    if (!o.csv.empty()) writers.emplace_back(o.csv, OCTOCAP_MOTION_CSV, layout, up, o.rate_hz);
-    if (!o.bvh.empty()) writers.emplace_back(o.bvh, OCTOCAP_MOTION_BVH, layout, up, o.rate_hz);
-  }
+  TakeWriters writers(o.output, o.csv, o.bvh, layout, up, o.rate_hz, several);
 
   const uint32_t K = octocap_layout_keypoint_count(layout);
   GroundTruth gt;
@@ -256,13 +191,7 @@ int solve(const SolveOptions& o) {
       write_debug_images(session, calib.get(), images, layout, K, frame, o.debug_images, f);
     solve_ms += frame.summary().solve_ms;
     const uint32_t present = frame.person_count();
-    if (several) {
-      for (uint32_t i = 0; i < present; ++i)
-        for (octocap::MotionWriter& w : writers) w.add(frame, i);
-      people_writers.add(frame);
-    } else {
-      for (octocap::MotionWriter& w : writers) w.add(frame, 0);
-    }
+    writers.add(frame);
     if (present >= people_histogram.size()) people_histogram.resize(present + 1, 0);
     ++people_histogram[present];
     for (uint32_t i = 0; i < present; ++i) {
@@ -303,8 +232,7 @@ int solve(const SolveOptions& o) {
   }
   const double total_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  for (octocap::MotionWriter& w : writers) w.close();
-  people_writers.close();
+  writers.close();
 
   const uint32_t done = frames > o.start_frame ? frames - o.start_frame : 0;  // frames this run solved
   double mean_err = 0;
@@ -352,11 +280,7 @@ int solve(const SolveOptions& o) {
     if (worst_k >= 0)
       std::printf("  worst keypoint:       %s, %.1f mm mean\n", octocap_layout_keypoint_name(layout, worst_k), worst);
   }
-  if (several)
-    std::printf("  wrote %s%s%s\n", people_writers.written().c_str(), o.csv.empty() ? "" : ", ", o.csv.c_str());
-  else
-    std::printf("  wrote %s%s%s%s%s\n", o.output.c_str(), o.csv.empty() ? "" : ", ", o.csv.c_str(),
-                o.bvh.empty() ? "" : ", ", o.bvh.c_str());
+  std::printf("  wrote %s\n", writers.written().c_str());
   if (frames_with_result == 0) {
     std::fprintf(stderr, "octocap solve: no frame could be solved (no person seen by enough views)\n");
     return 3;

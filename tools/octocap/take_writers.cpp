@@ -1,0 +1,84 @@
+#include "take_writers.h"
+
+#include <algorithm>
+#include <filesystem>
+
+namespace {
+
+std::string person_path(const std::string& path, uint32_t id) {
+  const std::filesystem::path p(path);
+  return (p.parent_path() / (p.stem().string() + "_person" + std::to_string(id) + p.extension().string())).string();
+}
+
+}  // namespace
+
+uint32_t max_people_of(const std::string& people) {
+  return people == "auto" ? 0u : static_cast<uint32_t>(std::stoul(people));
+}
+
+TakeWriters::TakeWriters(std::string trc, std::string csv, std::string bvh, octocap_layout_t layout,
+                         octocap_up_axis_t up, double rate_hz, bool several)
+    : trc_(std::move(trc)), csv_(std::move(csv)), bvh_(std::move(bvh)), layout_(layout), up_(up), rate_(rate_hz),
+      several_(several) {
+  if (several_) {
+    if (!csv_.empty()) shared_.emplace_back(csv_, OCTOCAP_MOTION_CSV_PEOPLE, layout_, up_, rate_);
+    return;
+  }
+  if (!trc_.empty()) shared_.emplace_back(trc_, OCTOCAP_MOTION_TRC, layout_, up_, rate_);
+  if (!csv_.empty()) shared_.emplace_back(csv_, OCTOCAP_MOTION_CSV, layout_, up_, rate_);
+  if (!bvh_.empty()) shared_.emplace_back(bvh_, OCTOCAP_MOTION_BVH, layout_, up_, rate_);
+}
+
+TakeWriters::Take& TakeWriters::take_of(uint32_t id) {
+  for (Take& t : takes_)
+    if (t.id == id) return t;
+  Take t{id, {}};
+  if (!trc_.empty()) t.writers.emplace_back(person_path(trc_, id), OCTOCAP_MOTION_TRC, layout_, up_, rate_);
+  if (!bvh_.empty()) t.writers.emplace_back(person_path(bvh_, id), OCTOCAP_MOTION_BVH, layout_, up_, rate_);
+  for (size_t f = 0; f < frames_; ++f)
+    for (octocap::MotionWriter& w : t.writers) w.add_empty();
+  takes_.push_back(std::move(t));
+  return takes_.back();
+}
+
+void TakeWriters::add(const octocap::Frame& frame) {
+  if (!several_) {
+    for (octocap::MotionWriter& w : shared_) w.add(frame, 0);
+    return;
+  }
+  const uint32_t present = frame.person_count();
+  std::vector<uint32_t> seen;
+  for (uint32_t i = 0; i < present; ++i) {
+    for (octocap::MotionWriter& w : shared_) w.add(frame, i);
+    const uint32_t id = frame.person(i).id;
+    for (octocap::MotionWriter& w : take_of(id).writers) w.add(frame, i);
+    seen.push_back(id);
+  }
+  for (Take& t : takes_)
+    if (std::find(seen.begin(), seen.end(), t.id) == seen.end())
+      for (octocap::MotionWriter& w : t.writers) w.add_empty();
+  ++frames_;
+}
+
+void TakeWriters::close() {
+  for (octocap::MotionWriter& w : shared_) w.close();
+  for (Take& t : takes_)
+    for (octocap::MotionWriter& w : t.writers) w.close();
+}
+
+std::string TakeWriters::written() const {
+  std::string s;
+  auto add = [&](const std::string& path) {
+    if (!path.empty()) s += (s.empty() ? "" : ", ") + path;
+  };
+  if (!several_) {
+    add(trc_), add(csv_), add(bvh_);
+  } else {
+    for (const Take& t : takes_) {
+      if (!trc_.empty()) add(person_path(trc_, t.id));
+      if (!bvh_.empty()) add(person_path(bvh_, t.id));
+    }
+    add(csv_);
+  }
+  return s.empty() ? "no file" : s;
+}

@@ -1,0 +1,38 @@
+// The files a take is written to, for one person (TRC, CSV, BVH as given) or several (OUT.trc -> OUT_person<ID>.trc
+// and a BVH per person, each as long as the take with empty frames where the person was not there; one CSV with a
+// person column). Each file is written when closed at the end: a take that fails on the way leaves none behind.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "octocap/octocap.hpp"
+
+// --people: "auto" (everyone, 0) or N.
+uint32_t max_people_of(const std::string& people);
+
+class TakeWriters {
+ public:
+  // Empty paths are not written.
+  TakeWriters(std::string trc, std::string csv, std::string bvh, octocap_layout_t layout, octocap_up_axis_t up,
+              double rate_hz, bool several);
+  void add(const octocap::Frame& frame);
+  void close();
+  // The files written, for the summary line.
+  std::string written() const;
+
+ private:
+  struct Take {
+    uint32_t id;
+    std::vector<octocap::MotionWriter> writers;
+  };
+  Take& take_of(uint32_t id);
+
+  std::string trc_, csv_, bvh_;
+  octocap_layout_t layout_;
+  octocap_up_axis_t up_;
+  double rate_;
+  bool several_;
+  std::vector<octocap::MotionWriter> shared_;  // one person: all files; several: the CSV
+  std::vector<Take> takes_;                    // several: per person
+  size_t frames_ = 0;
+};
