@@ -293,3 +293,28 @@ TEST_CASE("several people through the C ABI: frames with people, per-person quer
   octocap_session_destroy(s);
   octocap_calibration_destroy(calib);
 }
+
+TEST_CASE("several people: a crowd of detections in many views is solved in bounded work, at most max_people",
+          "[people][hardening]") {
+  synth::RigOptions rig;
+  rig.cameras = 20;
+  const Calibration calib = synth::make_camera_ring(rig);
+  const auto crowd = synth::make_crowd(3, 2);
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<std::vector<Person2D>> views(calib.size());
+  for (size_t v = 0; v < calib.size(); ++v) {
+    // The three real people, then 61 phantoms scattered over the picture (a detector gone wrong, less sure of them).
+    views[v] = synth::observe_crowd(Calibration{calib[v]}, {crowd[0][0], crowd[1][0], crowd[2][0]}, LayoutId::body25,
+                                    {}, rng).views[0];
+    while (views[v].size() < kMaxPeoplePerView) {
+      Person2D p(25);
+      for (auto& k : p) k = {u(rng) * 1280, u(rng) * 720, 0.35};
+      views[v].push_back(p);
+    }
+  }
+  Session session(several(0), calib);
+  session.solve(views, 0);
+  CHECK(session.result().person_count() <= kMaxPeople);
+  CHECK(session.result().person_count() >= 3);  // the real people, at least
+}

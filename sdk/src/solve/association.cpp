@@ -26,6 +26,12 @@ bool body_centre(const std::vector<Eigen::Vector3d>& pose, Eigen::Vector3d& out)
   return true;
 }
 
+double confidence(const Person2D& p) {
+  double sum = 0;
+  for (const Keypoint2D& k : p) sum += k.confidence;
+  return sum;
+}
+
 class Associator {
  public:
   Associator(const Calibration& calib, const std::vector<std::vector<Person2D>>& people, const AssociationParams& p)
@@ -66,15 +72,28 @@ class Associator {
       double cost;
       std::vector<int> choice;
     };
+    // Bounded work whatever the input (64 views of 64 people would be 8 million pairs): at most kMaxSeedTrials
+    // two-view triangulations a frame, from each view's most confident unused people. People left out now are found
+    // in a later frame, once the ones taken here are tracked.
+    constexpr double kMaxSeedTrials = 4000;
+    const double pairs = std::max(1.0, static_cast<double>(V * (V - 1) / 2));
+    const size_t keep = std::max<size_t>(2, static_cast<size_t>(std::sqrt(kMaxSeedTrials / pairs)));
+    std::vector<std::vector<int>> cands(V);
+    for (size_t v = 0; v < V; ++v) {
+      for (size_t p = 0; p < people_[v].size(); ++p)
+        if (!used_[v][p]) cands[v].push_back(static_cast<int>(p));
+      std::stable_sort(cands[v].begin(), cands[v].end(),
+                       [&](int x, int y) { return confidence(people_[v][x]) > confidence(people_[v][y]); });
+      if (cands[v].size() > keep) cands[v].resize(keep);
+    }
     std::vector<Seed> seeds;
     for (size_t a = 0; a < V; ++a)
       for (size_t b = a + 1; b < V; ++b)
-        for (size_t pa = 0; pa < people_[a].size(); ++pa)
-          for (size_t pb = 0; pb < people_[b].size(); ++pb) {
-            if (used_[a][pa] || used_[b][pb]) continue;
+        for (int pa : cands[a])
+          for (int pb : cands[b]) {
             std::vector<int> trial(V, -1);
-            trial[a] = static_cast<int>(pa);
-            trial[b] = static_cast<int>(pb);
+            trial[a] = pa;
+            trial[b] = pb;
             const auto errs = combination_errors(calib_, people_, trial, params_.min_confidence);
             const double cost = std::max(errs[a], errs[b]);
             if (cost <= params_.threshold_px) seeds.push_back({cost, std::move(trial)});
