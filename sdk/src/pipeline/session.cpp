@@ -225,19 +225,24 @@ bool Session::solve(const std::vector<std::vector<Person2D>>& people, int64_t ti
   else
     solve_several(usable, original, dt, timestamp_us);
 
-  // The frame as a whole: every person's keypoints, the views that hold anyone.
+  // The frame as a whole: every person's keypoints; the views that hold anyone (the blank person keeps a one-person
+  // selection that solved nobody).
   uint32_t solved = 0;
   double err = 0;
   std::vector<bool> seen(V, false);
+  auto mark_views = [&](const PersonResult& p) {
+    for (size_t v = 0; v < p.selected.size() && v < V; ++v)
+      if (p.selected[v] >= 0) seen[v] = true;
+  };
+  mark_views(frame_.blank);
   for (const PersonResult& p : frame_.people) {
     solved += p.keypoints_solved;
     err += p.mean_reprojection_error_px * p.keypoints_solved;
-    for (size_t v = 0; v < p.selected.size() && v < V; ++v)
-      if (p.selected[v] >= 0) seen[v] = true;
+    mark_views(p);
   }
   frame_.info.keypoints_solved = solved;
   frame_.info.mean_reprojection_error_px = solved ? err / solved : 0;
-  if (config_.max_people != 1) frame_.info.views_with_person = static_cast<uint32_t>(std::count(seen.begin(), seen.end(), true));
+  frame_.info.views_with_person = static_cast<uint32_t>(std::count(seen.begin(), seen.end(), true));
   frame_.info.solve_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   publish();
   return frame_.has_person();
@@ -254,7 +259,7 @@ void Session::solve_one(const std::vector<std::vector<Person2D>>& usable, const 
     with_person += choice[v] >= 0;
     blank.selected[v] = choice[v] >= 0 ? original[v][choice[v]] : -1;  // indices into the caller's list
   }
-  blank.views_with_person = frame_.info.views_with_person = with_person;
+  blank.views_with_person = with_person;
   if (with_person < static_cast<uint32_t>(config_.min_views)) {
     single_.raw_previous.clear();
     for (auto& f : single_.filters) f.reset();
@@ -284,10 +289,8 @@ void Session::solve_several(const std::vector<std::vector<Person2D>>& usable,
   for (const PersonCluster& c : clusters) {
     PersonResult p;
     p.keypoints = solve_points(usable, c.choice);
-    std::vector<Eigen::Vector3d> pose(p.keypoints.size(), Eigen::Vector3d::Constant(std::nan("")));
-    int solved = 0;
-    for (size_t k = 0; k < pose.size(); ++k)
-      if (p.keypoints[k].valid) pose[k] = p.keypoints[k].position, ++solved;
+    std::vector<Eigen::Vector3d> pose = raw_pose(p.keypoints);
+    const auto solved = std::count_if(pose.begin(), pose.end(), [](const Eigen::Vector3d& x) { return x.allFinite(); });
     if (solved < 3) continue;  // the views agreed on too little of a body to call it a person
     p.selected.assign(V, -1);
     for (size_t v = 0; v < V; ++v)
@@ -302,14 +305,12 @@ void Session::solve_several(const std::vector<std::vector<Person2D>>& usable,
     people[i].id = ids[i];
     auto [it, fresh] = states_.try_emplace(ids[i]);
     if (fresh) it->second = new_person_state();
-    PersonState& state = it->second;
-    // A track that was away has a stale filter state: it starts again from this frame.
-    if (state.raw_previous.empty()) for (auto& f : state.filters) f.reset();
-    finish_person(people[i], state, dt);
+    finish_person(people[i], it->second, dt);
   }
-  // Tracks not seen this frame: their filters restart when they come back.
+  // Tracks not seen this frame: their filters start again when they come back (as the one person's do).
   for (auto& [id, state] : states_)
-    if (std::find(ids.begin(), ids.end(), id) == ids.end()) state.raw_previous.clear();
+    if (std::find(ids.begin(), ids.end(), id) == ids.end())
+      for (auto& f : state.filters) f.reset();
   std::sort(people.begin(), people.end(), [](const PersonResult& a, const PersonResult& b) { return a.id < b.id; });
   frame_.people = std::move(people);
 }
@@ -337,9 +338,16 @@ std::vector<PointResult> Session::solve_points(const std::vector<std::vector<Per
   return points;
 }
 
+std::vector<Eigen::Vector3d> Session::raw_pose(const std::vector<PointResult>& keypoints) {
+  std::vector<Eigen::Vector3d> pose(keypoints.size(), Eigen::Vector3d::Constant(std::nan("")));
+  for (size_t k = 0; k < pose.size(); ++k)
+    if (keypoints[k].valid) pose[k] = keypoints[k].position;
+  return pose;
+}
+
 void Session::finish_person(PersonResult& person, PersonState& state, double dt) const {
   const size_t K = person.keypoints.size();
-  state.raw_previous.assign(K, Eigen::Vector3d::Constant(std::nan("")));
+  state.raw_previous = raw_pose(person.keypoints);
   uint32_t solved = 0;
   double err = 0;
   for (size_t k = 0; k < K; ++k) {
@@ -348,7 +356,6 @@ void Session::finish_person(PersonResult& person, PersonState& state, double dt)
       state.filters[k].reset();
       continue;
     }
-    state.raw_previous[k] = r.position;
     ++solved;
     err += r.reprojection_error_px;
     if (config_.filter) r.position = state.filters[k].filter(r.position, dt);

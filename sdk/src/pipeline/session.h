@@ -111,7 +111,8 @@ class Session {
   Method method() const { return method_; }
 
  private:
-  // What one person carries from frame to frame: the unfiltered pose (for tracking), the filters, the rolls.
+  // What one person carries from frame to frame: the unfiltered pose (the one person's selection follows it), the
+  // filters, the rolls.
   struct PersonState {
     std::vector<Eigen::Vector3d> raw_previous;  // empty when unknown
     std::vector<OneEuroFilter3> filters;
@@ -122,6 +123,8 @@ class Session {
   // The 3D keypoints of the person made of `choice` (the 2D person per view, -1 none), unfiltered.
   std::vector<PointResult> solve_points(const std::vector<std::vector<Person2D>>& usable,
                                         const std::vector<int>& choice) const;
+  // The valid keypoints' positions, NaN elsewhere.
+  static std::vector<Eigen::Vector3d> raw_pose(const std::vector<PointResult>& keypoints);
   // Filters the person's keypoints with its state, then derives its joints and bones.
   void finish_person(PersonResult& person, PersonState& state, double dt) const;
   void solve_one(const std::vector<std::vector<Person2D>>& usable, const std::vector<std::vector<int>>& original,

@@ -19,8 +19,6 @@ class MotionWriter {
   // The person's keypoints (and bones); a frame without that person is an empty frame (csv_people: no row).
   // Throws when the frame's layout is not the writer's.
   void add(const FrameResult& frame, size_t person);
-  // One person of a frame of the writer's layout (a take written per tracked person).
-  void add_person(const PersonResult& person, int64_t frame_index = 0);
   // Layout keypoints given directly (NaN where missing); not for BVH.
   void add_keypoints(const std::vector<Eigen::Vector3d>& keypoints);
   void add_empty();
@@ -29,6 +27,8 @@ class MotionWriter {
   size_t keypoint_count() const { return track_.markers.size(); }
 
  private:
+  void add_person(const PersonResult& person, int64_t frame_index);
+
   std::string path_;
   MotionFormat format_;
   LayoutId layout_;

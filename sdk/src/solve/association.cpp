@@ -2,14 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "solve/view_agreement.h"
 
 namespace octocap {
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The body's place: the median of its known keypoints per axis (robust to a stray keypoint).
 bool body_centre(const std::vector<Eigen::Vector3d>& pose, Eigen::Vector3d& out) {
@@ -78,10 +75,8 @@ class Associator {
     constexpr double kMaxSeedTrials = 4000;
     const double pairs = std::max(1.0, static_cast<double>(V * (V - 1) / 2));
     const size_t keep = std::max<size_t>(2, static_cast<size_t>(std::sqrt(kMaxSeedTrials / pairs)));
-    std::vector<std::vector<int>> cands(V);
+    std::vector<std::vector<int>> cands = unused();
     for (size_t v = 0; v < V; ++v) {
-      for (size_t p = 0; p < people_[v].size(); ++p)
-        if (!used_[v][p]) cands[v].push_back(static_cast<int>(p));
       std::stable_sort(cands[v].begin(), cands[v].end(),
                        [&](int x, int y) { return confidence(people_[v][x]) > confidence(people_[v][y]); });
       if (cands[v].size() > keep) cands[v].resize(keep);
@@ -104,19 +99,8 @@ class Associator {
       for (size_t v = 0; v < V; ++v)
         if (seed.choice[v] >= 0 && used_[v][seed.choice[v]]) free = false;
       if (!free) continue;
-      std::vector<Eigen::Vector3d> pose;
-      combination_errors(calib_, people_, seed.choice, params_.min_confidence, &pose);
       std::vector<int> choice = seed.choice;
-      for (size_t v = 0; v < V; ++v) {
-        if (choice[v] >= 0) continue;
-        double nearest = kInf;
-        for (size_t p = 0; p < people_[v].size(); ++p) {
-          if (used_[v][p]) continue;
-          const double d = distance_to_pose(calib_[v], people_[v][p], pose, params_.min_confidence);
-          if (d < nearest) nearest = d, choice[v] = static_cast<int>(p);
-        }
-        if (!(nearest <= 2 * params_.threshold_px)) choice[v] = -1;
-      }
+      grow_by_nearest(calib_, people_, unused(), params_.min_confidence, 2 * params_.threshold_px, choice);
       // The same body as a person already found: its views join that person where it has none.
       if (PersonCluster* same = same_body(choice)) {
         std::vector<int> merged = same->choice;
@@ -197,6 +181,15 @@ class Associator {
       if (worst < 0) return true;
       choice[worst] = -1;
     }
+  }
+
+  // Each view's 2D people not yet part of a person.
+  std::vector<std::vector<int>> unused() const {
+    std::vector<std::vector<int>> out(people_.size());
+    for (size_t v = 0; v < people_.size(); ++v)
+      for (size_t p = 0; p < people_[v].size(); ++p)
+        if (!used_[v][p]) out[v].push_back(static_cast<int>(p));
+    return out;
   }
 
   const Calibration& calib_;

@@ -22,7 +22,7 @@ struct AssociationParams {
 struct PersonCluster {
   std::vector<int> choice;
   int prior = -1;
-  std::vector<Eigen::Vector3d> pose;  // triangulated from the choice (NaN where unknown): for the tracker
+  std::vector<Eigen::Vector3d> pose;  // triangulated from the choice (NaN where unknown)
 };
 
 // people[view][person]. `priors`: the 3D keypoints (layout order, NaN unknown) of the people seen last, the

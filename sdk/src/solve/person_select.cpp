@@ -88,18 +88,8 @@ std::vector<int> greedy_combination(const Calibration& calib, const std::vector<
       inside = inside || all;
     }
     if (inside) continue;
-    std::vector<Eigen::Vector3d> pose;
-    combination_errors(calib, people, seed.choice, params.min_confidence, &pose);
     std::vector<int> choice = seed.choice;
-    for (size_t v = 0; v < V; ++v) {
-      if (choice[v] >= 0) continue;
-      double nearest = kInf;
-      for (int p : cands[v]) {
-        const double d = distance_to_pose(calib[v], people[v][p], pose, params.min_confidence);
-        if (d < nearest) nearest = d, choice[v] = p;
-      }
-      if (!(nearest <= 2 * thr)) choice[v] = -1;
-    }
+    grow_by_nearest(calib, people, cands, params.min_confidence, 2 * thr, choice);
     const auto errs = combination_errors(calib, people, choice, params.min_confidence);
     for (size_t v = 0; v < V; ++v)
       if (choice[v] >= 0 && fixed[v] < 0 && errs[v] > thr) choice[v] = -1;

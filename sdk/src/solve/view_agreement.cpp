@@ -61,4 +61,20 @@ std::vector<double> combination_errors(const Calibration& calib, const std::vect
   return out;
 }
 
+void grow_by_nearest(const Calibration& calib, const std::vector<std::vector<Person2D>>& people,
+                     const std::vector<std::vector<int>>& cands, double min_conf, double max_px,
+                     std::vector<int>& choice) {
+  std::vector<Eigen::Vector3d> pose;
+  combination_errors(calib, people, choice, min_conf, &pose);
+  for (size_t v = 0; v < choice.size(); ++v) {
+    if (choice[v] >= 0) continue;
+    double nearest = kInf;
+    for (int p : cands[v]) {
+      const double d = distance_to_pose(calib[v], people[v][p], pose, min_conf);
+      if (d < nearest) nearest = d, choice[v] = p;
+    }
+    if (!(nearest <= max_px)) choice[v] = -1;
+  }
+}
+
 }  // namespace octocap

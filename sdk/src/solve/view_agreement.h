@@ -20,4 +20,10 @@ std::vector<double> combination_errors(const Calibration& calib, const std::vect
                                        const std::vector<int>& choice, double min_conf,
                                        std::vector<Eigen::Vector3d>* pose = nullptr);
 
+// Grows `choice` by the views it lacks: each takes, among its candidates (cands[view], indices into people[view]),
+// the person nearest the reprojection of the choice's triangulation, when nearer than `max_px`.
+void grow_by_nearest(const Calibration& calib, const std::vector<std::vector<Person2D>>& people,
+                     const std::vector<std::vector<int>>& cands, double min_conf, double max_px,
+                     std::vector<int>& choice);
+
 }  // namespace octocap
