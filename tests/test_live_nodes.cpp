@@ -60,6 +60,10 @@ TEST_CASE("capture nodes: two node processes publish keypoints, a hub solves the
   cfg.read_timeout_ms = 1500;
   octocap::Live hub(cfg, coco_session(), calib, remote);  // no detector: the nodes detect
   hub.start();
+  REQUIRE(hub.take(30000));
+  let_stream_clocks_settle();  // the nodes' cameras
+  while (hub.take(0)) {
+  }
 
   // Whole sets: all four views of one instant, solved as well as the take solves offline.
   std::vector<double> reprojection;

@@ -111,6 +111,7 @@ TEST_CASE("live: four RTSP cameras on loopback solve as offline; one killed and 
       if (live.camera(c).grabbed < 30) return false;
     return true;
   }, 20000));
+  let_stream_clocks_settle();
   while (live.take(0)) {
   }
   Accuracy all_four;
@@ -125,8 +126,8 @@ TEST_CASE("live: four RTSP cameras on loopback solve as offline; one killed and 
   CHECK(all_four.with_person >= 0.75 * all_four.frames);  // a set of one view solves nobody: under load, a few
   CHECK(all_four.all_views >= 0.6 * all_four.with_person);  // most sets whole, though decoding shares two cores
   CHECK(median_of(all_four.reprojection) <= 1.2 * median_of(reference.reprojection) + 0.5);
-  // Within a tenth of offline: live pictures are up to half a frame apart across views, and every fifth or so is
-  // detected (the crops follow a person who moved further between them).
+  // Within a tenth of offline (measured: 0.98-1.0 once the stream clocks are trusted): live pictures are up to half a
+  // frame apart across views, and only every fifth or so is detected (the crops follow a person who moved further).
   CHECK(all_four.solved_per_frame() >= 0.9 * reference.solved_per_frame());
 
   // Camera 2's server dies: the engine goes on with three views while it reconnects.

@@ -45,6 +45,11 @@ inline double median_of(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+// How long a network camera streams before its pictures' capture times come from the stream's own clock (two steady
+// one-second windows, capture/stream_clock.h). Before that they are grab times, which on a loaded host pair pictures
+// of different instants: by design, and not what an accuracy check should measure.
+inline void let_stream_clocks_settle() { std::this_thread::sleep_for(std::chrono::milliseconds(2500)); }
+
 template <class Pred>
 bool wait_until(Pred&& done, int timeout_ms) {
   const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeout_ms);
