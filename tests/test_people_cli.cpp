@@ -9,12 +9,16 @@
 #include <map>
 #include <random>
 #include <regex>
+#include <set>
 #include <sstream>
 
 #include "crowd.h"
 #include "io/calibration_toml.h"
 #include "io/motion_files.h"
 #include "io/openpose_json.h"
+#include "octocap/octocap.h"
+#include "support/child_process.h"
+#include "support/loopback_dds.h"
 #include "support/run_command.h"
 #include "support/temp_dir.h"
 
@@ -74,21 +78,7 @@ TEST_CASE("octocap solve --people auto: one TRC per person, a CSV with a person 
   testing::TempDir dir;
   synth::RigOptions rig;
   rig.cameras = 5;
-  const Calibration calib = synth::make_camera_ring(rig);
-  write_calibration_toml(calib, dir.file("calibration.toml"));
-  const auto crowd = synth::make_crowd(3, 40);
-  std::mt19937 rng(6);
-  for (size_t f = 0; f < 40; ++f) {
-    std::vector<std::vector<Eigen::Vector3d>> now{crowd[0][f], crowd[1][f], crowd[2][f]};
-    const synth::CrowdObservation obs = synth::observe_crowd(calib, now, LayoutId::body25, {}, rng);
-    for (size_t v = 0; v < calib.size(); ++v) {
-      const fs::path folder = fs::path(dir.file("keypoints")) / (calib[v].name + "_json");
-      fs::create_directories(folder);
-      char name[32];
-      std::snprintf(name, sizeof name, "%06zu.json", f);
-      write_openpose_file((folder / name).string(), obs.views[v]);
-    }
-  }
+  const auto crowd = synth::write_crowd_take(synth::make_camera_ring(rig), 3, 40, dir.path().string(), 6);
   const testing::Run r = testing::run_command(std::string(OCTOCAP_CLI_PATH) + " solve --calibration " +
                                               dir.file("calibration.toml") + " --keypoints " + dir.file("keypoints") +
                                               " --output " + dir.file("take.trc") + " --csv " + dir.file("take.csv") +
@@ -234,5 +224,74 @@ TEST_CASE("octocap live --people auto: the real two-person videos played as came
   }
   CHECK(both >= 15);
   CHECK(csv.rows.size() == 2);
+}
+#endif
+
+#ifdef OCTOCAP_HAVE_DDS
+TEST_CASE("octocap solve --people auto --publish: another process receives every frame with everyone and their ids",
+          "[people][cli][stream]") {
+  testing::TempDir dir;
+  synth::RigOptions rig;
+  rig.cameras = 5;
+  const auto crowd = synth::write_crowd_take(synth::make_camera_ring(rig), 3, 30, dir.path().string(), 11);
+  octocap_subscriber_config_t cfg;
+  octocap_subscriber_config_init(&cfg);
+  cfg.domain_id = testing::loopback_dds_domain();
+  cfg.qos = OCTOCAP_QOS_RECORD;
+  std::snprintf(cfg.topic, sizeof cfg.topic, "%s", "crowd");
+  octocap_subscriber_t* sub = nullptr;
+  REQUIRE(octocap_subscriber_create(&cfg, &sub) == OCTOCAP_OK);
+  testing::ChildProcess publisher({OCTOCAP_CLI_PATH, "solve", "--calibration", dir.file("calibration.toml"),
+                                   "--keypoints", dir.file("keypoints"), "--output", dir.file("take.trc"), "--csv",
+                                   dir.file("take.csv"), "--people", "auto", "--filter", "none", "--quiet",
+                                   "--publish", "--publish-qos", "record", "--domain", std::to_string(cfg.domain_id),
+                                   "--topic", "crowd", "--rate", "200", "--linger-s", "1", "--wait-subscribers", "1"});
+  REQUIRE(publisher.started());
+  // What the publisher wrote to its CSV is what arrives: the same people with the same ids in every frame, the same
+  // keypoints (to the wire's float precision).
+  std::vector<octocap_frame_t*> frames;
+  while (frames.size() < 30) {
+    octocap_frame_t* f = nullptr;
+    REQUIRE(octocap_subscriber_take_frame(sub, 10000, &f) == OCTOCAP_OK);
+    frames.push_back(f);
+  }
+  octocap_subscriber_destroy(sub);
+  REQUIRE(publisher.wait() == 0);
+  const PeopleCsv csv = read_people_csv(dir.file("take.csv"));
+  REQUIRE(csv.rows.size() == 3);
+  size_t people = 0;
+  for (size_t n = 0; n < frames.size(); ++n) {
+    octocap_frame_summary_t sum{};
+    sum.struct_size = sizeof sum;
+    REQUIRE(octocap_frame_get_summary(frames[n], &sum) == OCTOCAP_OK);
+    const int64_t f = sum.frame_index;
+    INFO("frame " << f);
+    REQUIRE(f == static_cast<int64_t>(n));  // in order, none lost
+    std::set<uint32_t> expected;
+    for (const auto& [id, rows] : csv.rows)
+      if (rows.count(f)) expected.insert(id);
+    REQUIRE(sum.person_count == expected.size());
+    for (uint32_t i = 0; i < sum.person_count; ++i) {
+      octocap_person_t person{};
+      person.struct_size = sizeof person;
+      REQUIRE(octocap_frame_get_person(frames[n], i, &person) == OCTOCAP_OK);
+      REQUIRE(expected.count(person.id) == 1);
+      const std::vector<Eigen::Vector3d>& row = csv.rows.at(person.id).at(f);
+      std::vector<octocap_joint_t> kp(row.size());
+      uint32_t count = 0;
+      REQUIRE(octocap_frame_get_keypoints3d(frames[n], i, kp.data(), static_cast<uint32_t>(kp.size()), &count) ==
+              OCTOCAP_OK);
+      REQUIRE(count == row.size());
+      for (size_t k = 0; k < kp.size(); ++k) {
+        CHECK(static_cast<bool>(kp[k].valid) == row[k].allFinite());
+        if (kp[k].valid)
+          CHECK((Eigen::Vector3d(kp[k].position[0], kp[k].position[1], kp[k].position[2]) - row[k]).norm() < 1e-6);
+      }
+      ++people;
+    }
+  }
+  CHECK(people >= 3 * 30 - 3);
+  for (octocap_frame_t* f : frames) octocap_frame_release(f);
+  (void)crowd;
 }
 #endif

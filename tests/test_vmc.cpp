@@ -8,11 +8,15 @@
 
 #include <cstring>
 #include <map>
+#include <random>
 #include <string>
 #include <vector>
 
+#include "crowd.h"
+#include "io/calibration_toml.h"
 #include "octocap/octocap.h"
 #include "support/capi_helpers.h"
+#include "support/temp_dir.h"
 
 namespace {
 
@@ -83,7 +87,133 @@ std::vector<OscMessage> parse_bundle(const std::vector<uint8_t>& packet) {
   return out;
 }
 
+// A UDP socket on loopback at `port` (0: any free one); -1 when the port is taken.
+int bind_udp(uint16_t port, uint16_t& bound) {
+  const int sock = socket(AF_INET, SOCK_DGRAM, 0);
+  REQUIRE(sock >= 0);
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  addr.sin_port = htons(port);
+  if (bind(sock, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0) {
+    close(sock);
+    return -1;
+  }
+  socklen_t len = sizeof addr;
+  REQUIRE(getsockname(sock, reinterpret_cast<sockaddr*>(&addr), &len) == 0);
+  bound = ntohs(addr.sin_port);
+  return sock;
+}
+
+// The next bundle waiting on `sock` (the session sends while it solves, so it is there when the solve returns); empty
+// when there is none.
+std::vector<OscMessage> next_bundle(int sock) {
+  std::vector<uint8_t> packet(65536);
+  const ssize_t got = recv(sock, packet.data(), packet.size(), MSG_DONTWAIT);
+  if (got <= 0) return {};
+  packet.resize(static_cast<size_t>(got));
+  return parse_bundle(packet);
+}
+
 }  // namespace
+
+TEST_CASE("VMC output with several people: a port each, kept while tracked, OK 0 once when the person goes",
+          "[vmc][people]") {
+  // Two receivers on consecutive ports: VMC port P for the first slot, P + 1 for the second.
+  int socks[2] = {-1, -1};
+  uint16_t port = 0;
+  for (int attempt = 0; attempt < 20 && socks[1] < 0; ++attempt) {
+    if (socks[0] >= 0) close(socks[0]);
+    socks[0] = bind_udp(0, port);
+    uint16_t next = 0;
+    if (port < 65535) socks[1] = bind_udp(static_cast<uint16_t>(port + 1), next);
+  }
+  REQUIRE(socks[1] >= 0);
+
+  // Two real motions side by side, five cameras; the first person walks off after frame 11.
+  octocap::synth::RigOptions rig;
+  const octocap::Calibration truth_calib = octocap::synth::make_camera_ring(rig);
+  const auto crowd = octocap::synth::make_crowd(2, 18);
+  testing::TempDir dir;
+  octocap::write_calibration_toml(truth_calib, dir.file("calibration.toml"));
+  octocap_calibration_t* c = nullptr;
+  REQUIRE(octocap_calibration_load(dir.file("calibration.toml").c_str(), &c) == OCTOCAP_OK);
+  testing::Calib calib(c);
+  octocap_session_config_t cfg;
+  octocap_session_config_init(&cfg);
+  cfg.max_people = 2;
+  cfg.vmc_port = port;
+  testing::Session s = testing::make_session(calib.get(), cfg);
+
+  std::mt19937 rng(3);
+  uint32_t slot_id[2] = {0, 0};  // the person each port drives
+  int gone_slot = -1;
+  for (size_t f = 0; f < 18; ++f) {
+    INFO("frame " << f);
+    const bool both = f < 12;
+    std::vector<std::vector<Eigen::Vector3d>> now{both ? crowd[0][f] : std::vector<Eigen::Vector3d>{}, crowd[1][f]};
+    const auto flat = octocap::synth::flatten(
+        octocap::synth::observe_crowd(truth_calib, now, octocap::LayoutId::body25, {}, rng).views);
+    REQUIRE(octocap_session_solve_keypoints(s.get(), reinterpret_cast<const octocap_keypoint2d_t*>(flat.xyc.data()),
+                                            flat.people_per_view.data(), 5, static_cast<int64_t>(f) * 33333) ==
+            OCTOCAP_OK);
+    octocap_frame_t* frame = nullptr;
+    REQUIRE(octocap_session_get_frame(s.get(), &frame) == OCTOCAP_OK);
+    octocap_frame_summary_t sum{};
+    sum.struct_size = sizeof sum;
+    REQUIRE(octocap_frame_get_summary(frame, &sum) == OCTOCAP_OK);
+    REQUIRE(sum.person_count == (both ? 2u : 1u));
+    std::map<uint32_t, std::vector<octocap_bone_pose_t>> bones;  // by person id, Unity's frame
+    for (uint32_t i = 0; i < sum.person_count; ++i) {
+      octocap_person_t p{};
+      p.struct_size = sizeof p;
+      REQUIRE(octocap_frame_get_person(frame, i, &p) == OCTOCAP_OK);
+      std::vector<octocap_bone_pose_t> b(OCTOCAP_BONE_COUNT);
+      uint32_t n = 0;
+      REQUIRE(octocap_frame_get_bones(frame, i, OCTOCAP_FRAME_UNITY, b.data(), OCTOCAP_BONE_COUNT, &n) == OCTOCAP_OK);
+      bones[p.id] = b;
+    }
+    octocap_frame_release(frame);
+
+    for (int slot = 0; slot < 2; ++slot) {
+      INFO("port " << port + slot);
+      const std::vector<OscMessage> bundle = next_bundle(socks[slot]);
+      if (slot == gone_slot) {  // said once, then silent
+        CHECK(bundle.empty());
+        continue;
+      }
+      REQUIRE_FALSE(bundle.empty());
+      const OscMessage* ok = nullptr;
+      const OscMessage* root = nullptr;
+      for (const OscMessage& m : bundle) {
+        if (m.address == "/VMC/Ext/OK") ok = &m;
+        if (m.address == "/VMC/Ext/Root/Pos") root = &m;
+      }
+      REQUIRE(ok);
+      if (ok->ints.at(0) == 0) {  // this port's person went
+        CHECK(f == 12);
+        CHECK_FALSE(root);
+        CHECK(bones.count(slot_id[slot]) == 0);
+        gone_slot = slot;
+        continue;
+      }
+      // The root of exactly one person of the frame, the same person as on this port before.
+      REQUIRE(root);
+      uint32_t who = 0;
+      for (const auto& [id, b] : bones)
+        if (root->floats.at(0) == b[0].head_position[0] && root->floats.at(1) == b[0].head_position[1] &&
+            root->floats.at(6) == b[0].global_rotation.w)
+          who = id;
+      REQUIRE(who != 0);
+      if (slot_id[slot] != 0) CHECK(who == slot_id[slot]);
+      slot_id[slot] = who;
+    }
+    CHECK(slot_id[0] != slot_id[1]);
+  }
+  CHECK(gone_slot >= 0);
+  close(socks[0]);
+  close(socks[1]);
+}
 
 TEST_CASE("VMC output: a real OSC receiver gets every bone as octocap solved it, in Unity's frame", "[vmc]") {
   const int sock = socket(AF_INET, SOCK_DGRAM, 0);

@@ -6,6 +6,12 @@
 
 #include <Eigen/Geometry>
 
+#include <cstdio>
+#include <filesystem>
+
+#include "io/calibration_toml.h"
+#include "io/openpose_json.h"
+
 namespace octocap::synth {
 
 std::vector<std::vector<std::vector<Eigen::Vector3d>>> make_crowd(size_t people, size_t frames, double spread) {
@@ -100,6 +106,28 @@ CrowdObservation observe_crowd(const Calibration& calib, const std::vector<std::
     obs.who[v] = std::move(who);
   }
   return obs;
+}
+
+std::vector<std::vector<std::vector<Eigen::Vector3d>>> write_crowd_take(const Calibration& calib, size_t people,
+                                                                        size_t frames, const std::string& dir,
+                                                                        unsigned seed) {
+  namespace fs = std::filesystem;
+  write_calibration_toml(calib, (fs::path(dir) / "calibration.toml").string());
+  const auto crowd = make_crowd(people, frames);
+  std::mt19937 rng(seed);
+  for (size_t f = 0; f < frames; ++f) {
+    std::vector<std::vector<Eigen::Vector3d>> now;
+    for (size_t p = 0; p < people; ++p) now.push_back(crowd[p][f]);
+    const CrowdObservation obs = observe_crowd(calib, now, LayoutId::body25, {}, rng);
+    for (size_t v = 0; v < calib.size(); ++v) {
+      const fs::path folder = fs::path(dir) / "keypoints" / (calib[v].name + "_json");
+      fs::create_directories(folder);
+      char name[32];
+      std::snprintf(name, sizeof name, "%06zu.json", f);
+      write_openpose_file((folder / name).string(), obs.views[v]);
+    }
+  }
+  return crowd;
 }
 
 }  // namespace octocap::synth

@@ -3,6 +3,7 @@
 // keypoints behind it), people missed in some views, and each view's people in random order.
 #pragma once
 #include <random>
+#include <string>
 #include <vector>
 
 #include "synth.h"
@@ -30,5 +31,11 @@ struct CrowdObservation {
 // One frame: truth[person] = keypoints in `layout` order (empty: not there this frame).
 CrowdObservation observe_crowd(const Calibration& calib, const std::vector<std::vector<Eigen::Vector3d>>& truth,
                                LayoutId layout, const CrowdNoise& noise, std::mt19937& rng);
+
+// A crowd take as a user's files: DIR/calibration.toml and DIR/keypoints/<camera>_json/NNNNNN.json (OpenPose), each
+// view's people shuffled, no noise. Returns the truth (make_crowd's).
+std::vector<std::vector<std::vector<Eigen::Vector3d>>> write_crowd_take(const Calibration& calib, size_t people,
+                                                                        size_t frames, const std::string& dir,
+                                                                        unsigned seed);
 
 }  // namespace octocap::synth

@@ -339,7 +339,7 @@ typedef struct octocap_frame_summary_t {
   uint32_t struct_size;         /**< Set by the caller to sizeof(octocap_frame_summary_t). */
   uint32_t person_count;        /**< People in this frame (0 when nothing was solved), in increasing id order. A
                                      session solves one person unless its config's max_people says more; a DDS
-                                     subscriber and a motion file give at most one. */
+                                     subscriber gives what its publisher solved; a motion file at most one. */
   int64_t frame_index;          /**< The source's frame number (a session starts at its first_frame_index). */
   int64_t timestamp_us;         /**< Frame time given to the solve (0 for motion files). */
   octocap_layout_t layout;      /**< Layout of the keypoints of every person. */
@@ -588,9 +588,14 @@ typedef struct octocap_session_config_t {
   octocap_stream_qos_t stream_qos; /**< Default ::OCTOCAP_QOS_LIVE. */
   uint32_t stream_history_depth; /**< Poses a RECORD stream keeps for late joiners. Default 256. */
   uint32_t stream_source_id;     /**< Identifies this rig on a shared topic (the DDS key). Default 1. */
-  char stream_topic[OCTOCAP_NAME_CAPACITY]; /**< Topic base name, "<name>_pose" and "<name>_definition". Default "octocap". */
+  char stream_topic[OCTOCAP_NAME_CAPACITY]; /**< Topic base name, "<name>_pose" (or "<name>_people" with
+                                      max_people != 1) and "<name>_definition". Default "octocap". */
   uint32_t vmc_port;             /**< Non-zero: also send every frame as VMC protocol (OSC/UDP) to this port;
-                                      VMC's usual port is ::OCTOCAP_VMC_DEFAULT_PORT. Default 0 (off). */
+                                      VMC's usual port is ::OCTOCAP_VMC_DEFAULT_PORT. Default 0 (off). A VMC
+                                      receiver drives one avatar: with max_people != 1, person slot n goes to
+                                      vmc_port + n (slots: max_people, or ::OCTOCAP_MAX_PEOPLE for 0). A person keeps
+                                      their slot while tracked, a newcomer takes the lowest free one, and a slot
+                                      whose person left is sent /VMC/Ext/OK 0 once. */
   char vmc_host[64];             /**< Receiver of the VMC output. Default "127.0.0.1". */
   /* 1.3 */
   uint32_t max_people;           /**< People solved per frame. 1 (default): one person, the one the views agree on,
@@ -946,7 +951,9 @@ OCTOCAP_API octocap_result_t octocap_node_get_camera_status(const octocap_node_t
  *
  * A session with `stream_enable` publishes every frame on two topics: "<topic>_definition" (the skeleton
  * definition: layout, keypoint and joint names, bones; reliable, transient-local, so a late joiner always has
- * it) and "<topic>_pose" (per frame). Publishing never blocks the solve: frames go to a queue that a
+ * it) and, per frame, "<topic>_pose" (one person) or, for a session whose max_people is not 1, "<topic>_people"
+ * (everyone of the frame in one sample, with their ids: a reader never mixes people of two frames). A subscriber
+ * reads both. The IDL (sdk/src/stream/idl/octocap_stream.idl) is the wire's reference. Publishing never blocks the solve: frames go to a queue that a
  * library thread writes; when it is full the oldest frame is dropped. A subscriber, in this process or on
  * another machine, hands out the same frames as a local session. Cyclone is configured as usual through the
  * CYCLONEDDS_URI environment variable (network interface, multicast, peers).

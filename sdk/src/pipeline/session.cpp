@@ -108,14 +108,18 @@ Session::Session(const SessionConfig& config, Calibration calib)
   frame_.info.frame_index = config_.first_frame_index - 1;
   if (config_.publish) {
 #ifdef OCTOCAP_HAVE_DDS
-    sinks_.push_back(std::make_unique<DdsPublisher>(config_.stream, config_.layout, frame_.definition_counter));
+    StreamConfig stream = config_.stream;
+    stream.several_people = config_.max_people != 1;
+    sinks_.push_back(std::make_unique<DdsPublisher>(stream, config_.layout, frame_.definition_counter));
 #else
     throw Error(Errc::unsupported, "this build of octocap has no DDS streaming (OCTOCAP_WITH_DDS=OFF)");
 #endif
   }
   if (config_.vmc_port != 0) {
 #ifdef OCTOCAP_HAVE_DDS
-    sinks_.push_back(std::make_unique<VmcSender>(config_.vmc_host, config_.vmc_port));
+    // A receiver per person: ports vmc_port .. vmc_port + max_people - 1.
+    const uint32_t slots = config_.max_people == 0 ? kMaxPeople : config_.max_people;
+    sinks_.push_back(std::make_unique<VmcSender>(config_.vmc_host, config_.vmc_port, slots));
 #else
     throw Error(Errc::unsupported, "this build of octocap has no VMC output (OCTOCAP_WITH_DDS=OFF)");
 #endif

@@ -13,6 +13,7 @@ struct DdsPublisher::Impl {
   uint32_t definition_counter = 1;
   DefinitionBuffers definition;
   PoseBuffers pose;
+  PeopleBuffers people;
   explicit Impl(uint32_t domain) : participant(domain) {}
 };
 
@@ -22,7 +23,10 @@ DdsPublisher::DdsPublisher(const StreamConfig& config, LayoutId layout, uint32_t
       capacity_(config.qos == StreamQos::record ? std::max<size_t>(config.history_depth, 64) : 1) {
   const dds_entity_t p = impl_->participant.get();
   const dds_entity_t def_topic = create_topic(p, &octocap_wire_SkeletonDefinition_desc, config.topic + "_definition");
-  const dds_entity_t pose_topic = create_topic(p, &octocap_wire_Pose_desc, config.topic + "_pose");
+  // A several-people session writes People instead of Pose (the IDL says why).
+  const dds_entity_t pose_topic = config.several_people
+                                      ? create_topic(p, &octocap_wire_PeopleFrame_desc, config.topic + "_people")
+                                      : create_topic(p, &octocap_wire_Pose_desc, config.topic + "_pose");
   dds_qos_t* dq = definition_qos();
   const dds_entity_t def_writer = dds_create_writer(p, def_topic, dq, nullptr);
   dds_delete_qos(dq);
@@ -85,8 +89,14 @@ void DdsPublisher::run() {
       queue_.pop_front();
       writing_ = true;
     }
-    fill_pose(frame, config_.source_id, impl_->definition_counter, impl_->pose);
-    const dds_return_t rc = dds_write(impl_->pose_writer, &impl_->pose.sample);
+    dds_return_t rc;
+    if (config_.several_people) {
+      fill_people(frame, config_.source_id, impl_->definition_counter, impl_->people);
+      rc = dds_write(impl_->pose_writer, &impl_->people.sample);
+    } else {
+      fill_pose(frame, config_.source_id, impl_->definition_counter, impl_->pose);
+      rc = dds_write(impl_->pose_writer, &impl_->pose.sample);
+    }
     if (rc < 0) log(LogLevel::warning, std::string("DDS: writing a pose failed: ") + dds_strretcode(rc));
     {
       std::lock_guard<std::mutex> lock(mutex_);

@@ -9,7 +9,7 @@ namespace octocap {
 
 struct DdsSubscriber::Impl {
   DdsParticipant participant;
-  dds_entity_t def_reader = 0, pose_reader = 0, waitset = 0, pose_ready = 0;
+  dds_entity_t def_reader = 0, pose_reader = 0, people_reader = 0, waitset = 0;
   explicit Impl(uint32_t domain) : participant(domain) {}
 };
 
@@ -18,6 +18,7 @@ DdsSubscriber::DdsSubscriber(const StreamConfig& config)
   const dds_entity_t p = impl_->participant.get();
   const dds_entity_t def_topic = create_topic(p, &octocap_wire_SkeletonDefinition_desc, config.topic + "_definition");
   const dds_entity_t pose_topic = create_topic(p, &octocap_wire_Pose_desc, config.topic + "_pose");
+  const dds_entity_t people_topic = create_topic(p, &octocap_wire_PeopleFrame_desc, config.topic + "_people");
   dds_qos_t* dq = definition_qos();
   impl_->def_reader = dds_create_reader(p, def_topic, dq, nullptr);
   dds_delete_qos(dq);
@@ -26,9 +27,15 @@ DdsSubscriber::DdsSubscriber(const StreamConfig& config)
   impl_->pose_reader = dds_create_reader(p, pose_topic, pq, nullptr);
   dds_delete_qos(pq);
   check_dds(impl_->pose_reader, "creating the pose reader");
+  pq = pose_qos(config);
+  impl_->people_reader = dds_create_reader(p, people_topic, pq, nullptr);
+  dds_delete_qos(pq);
+  check_dds(impl_->people_reader, "creating the people reader");
   impl_->waitset = check_dds(dds_create_waitset(p), "creating a waitset");
-  impl_->pose_ready = check_dds(dds_create_readcondition(impl_->pose_reader, DDS_ANY_STATE), "creating a read condition");
-  check_dds(dds_waitset_attach(impl_->waitset, impl_->pose_ready, 0), "attaching the read condition");
+  for (dds_entity_t reader : {impl_->pose_reader, impl_->people_reader}) {
+    const dds_entity_t ready = check_dds(dds_create_readcondition(reader, DDS_ANY_STATE), "creating a read condition");
+    check_dds(dds_waitset_attach(impl_->waitset, ready, 0), "attaching the read condition");
+  }
 }
 
 DdsSubscriber::~DdsSubscriber() = default;
@@ -63,56 +70,81 @@ void DdsSubscriber::take_definitions() {
   }
 }
 
-bool DdsSubscriber::take_one_pose() {
+void DdsSubscriber::guess_layout(uint32_t keypoint_count) {
+  // The definition arrives reliably but may trail the first poses; until then, guess by count.
+  if (stats_.has_definition || keypoint_count == octocap::layout(layout_).keypoints.size()) return;
+  try {
+    const LayoutId guess = layout_for_count(keypoint_count);
+    if (guess != layout_ || local_definition_ == 0) local_definition_ = next_definition_counter();
+    layout_ = guess;
+  } catch (const Error&) {
+  }
+}
+
+bool DdsSubscriber::accept(bool read, FrameResult& next, uint32_t source_id, const std::string& why) {
+  if (!read) {
+    ++stats_.rejected;
+    log(LogLevel::warning, "stream: pose sample rejected: " + why);
+    return false;
+  }
+  const int64_t f = next.info.frame_index;
+  stats_.last_gap = 0;
+  if (last_frame_ >= 0 && f <= last_frame_) {
+    ++stats_.restarts;
+    log(LogLevel::info, "stream: frame numbers restarted at " + std::to_string(f) + " after " +
+                            std::to_string(last_frame_) + " (publisher restarted)");
+  } else if (last_frame_ >= 0 && f > last_frame_ + 1) {
+    stats_.last_gap = static_cast<uint64_t>(f - last_frame_ - 1);
+    stats_.frames_lost += stats_.last_gap;
+  }
+  last_frame_ = f;
+  stats_.source_id = source_id;
+  if (local_definition_ == 0) local_definition_ = next_definition_counter();
+  next.source_id = source_id;
+  next.definition_counter = local_definition_;
+  next.layout = layout_;
+  ++stats_.frames_received;
+  frame_ = std::move(next);
+  return true;
+}
+
+namespace {
+
+// Takes samples of `reader` until `handle` accepts one; false when none is left.
+template <class Sample, class Handle>
+bool take_accepted(dds_entity_t reader, Handle&& handle) {
   void* samples[1] = {nullptr};
   dds_sample_info_t info[1];
   for (;;) {
-    const dds_return_t n = dds_take(impl_->pose_reader, samples, info, 1, 1);
+    const dds_return_t n = dds_take(reader, samples, info, 1, 1);
     if (n <= 0) return false;
-    bool accepted = false;
-    if (info[0].valid_data) {
-      const auto* pose = static_cast<const octocap_wire_Pose*>(samples[0]);
-      if (config_.source_id == 0 || pose->source_id == config_.source_id) {
-        std::string why;
-        if (!stats_.has_definition && pose->keypoints._length != octocap::layout(layout_).keypoints.size()) {
-          // The definition arrives reliably but may trail the first poses; until then, guess by count.
-          try {
-            const LayoutId guess = layout_for_count(pose->keypoints._length);
-            if (guess != layout_ || local_definition_ == 0) local_definition_ = next_definition_counter();
-            layout_ = guess;
-          } catch (const Error&) {
-          }
-        }
-        FrameResult next = frame_;
-        if (read_pose(*pose, layout_, next, why)) {
-          const int64_t f = next.info.frame_index;
-          stats_.last_gap = 0;
-          if (last_frame_ >= 0 && f <= last_frame_) {
-            ++stats_.restarts;
-            log(LogLevel::info, "stream: frame numbers restarted at " + std::to_string(f) + " after " +
-                                    std::to_string(last_frame_) + " (publisher restarted)");
-          } else if (last_frame_ >= 0 && f > last_frame_ + 1) {
-            stats_.last_gap = static_cast<uint64_t>(f - last_frame_ - 1);
-            stats_.frames_lost += stats_.last_gap;
-          }
-          last_frame_ = f;
-          stats_.source_id = pose->source_id;
-          if (local_definition_ == 0) local_definition_ = next_definition_counter();
-          next.source_id = pose->source_id;
-          next.definition_counter = local_definition_;
-          next.layout = layout_;
-          ++stats_.frames_received;
-          frame_ = std::move(next);
-          accepted = true;
-        } else {
-          ++stats_.rejected;
-          log(LogLevel::warning, "stream: pose sample rejected: " + why);
-        }
-      }
-    }
-    dds_return_loan(impl_->pose_reader, samples, n);
+    const bool accepted = info[0].valid_data && handle(*static_cast<const Sample*>(samples[0]));
+    dds_return_loan(reader, samples, n);
     if (accepted) return true;
   }
+}
+
+}  // namespace
+
+bool DdsSubscriber::take_one_pose() {
+  auto ours = [&](uint32_t source) { return config_.source_id == 0 || source == config_.source_id; };
+  // A source writes one of the two topics: Pose with one person, People with several.
+  auto pose = [&](const octocap_wire_Pose& s) {
+    if (!ours(s.source_id)) return false;
+    guess_layout(s.keypoints._length);
+    FrameResult next = frame_;
+    std::string why;
+    return accept(read_pose(s, layout_, next, why), next, s.source_id, why);
+  };
+  auto people = [&](const octocap_wire_PeopleFrame& s) {
+    if (!ours(s.source_id)) return false;
+    if (s.people._length > 0) guess_layout(s.people._buffer[0].keypoints._length);
+    FrameResult next = frame_;
+    std::string why;
+    return accept(read_people(s, layout_, next, why), next, s.source_id, why);
+  };
+  return take_accepted<octocap_wire_PeopleFrame>(impl_->people_reader, people) ||
+         take_accepted<octocap_wire_Pose>(impl_->pose_reader, pose);
 }
 
 bool DdsSubscriber::take_next(int timeout_ms) {

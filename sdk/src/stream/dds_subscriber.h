@@ -1,7 +1,8 @@
-// Receives skeletons published by another process (or machine) and keeps the last one as a FrameResult,
-// which the C ABI queries exactly like a local session's. Reports lost frames and publisher restarts.
+// Receives skeletons published by another process (or machine), one person or several, and keeps the last one as a
+// FrameResult, which the C ABI queries exactly like a local session's. Reports lost frames and publisher restarts.
 #pragma once
 #include <memory>
+#include <string>
 
 #include "core/frame.h"
 #include "stream/stream_config.h"
@@ -35,6 +36,9 @@ class DdsSubscriber {
  private:
   void take_definitions();
   bool take_one_pose();
+  void guess_layout(uint32_t keypoint_count);
+  // Counts a read sample (or its rejection) and makes it the current frame.
+  bool accept(bool read, FrameResult& next, uint32_t source_id, const std::string& why);
 
   struct Impl;
   std::unique_ptr<Impl> impl_;

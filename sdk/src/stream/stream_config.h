@@ -12,10 +12,11 @@ enum class StreamQos : int { live = 0, record = 1 };
 
 struct StreamConfig {
   uint32_t domain_id = 0;
-  std::string topic = "octocap";  // topics are "<topic>_definition" and "<topic>_pose"
+  std::string topic = "octocap";  // topics are "<topic>_definition" and "<topic>_pose" (or "<topic>_people")
   StreamQos qos = StreamQos::live;
   uint32_t history_depth = 256;
   uint32_t source_id = 1;         // publisher: this rig's id; subscriber: 0 = any source
+  bool several_people = false;    // publisher: everyone on "<topic>_people", not the first person on "<topic>_pose"
 };
 
 }  // namespace octocap

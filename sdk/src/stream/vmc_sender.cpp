@@ -2,6 +2,8 @@
 
 #include <lo/lo.h>
 
+#include <algorithm>
+
 #include "core/error.h"
 #include "core/log.h"
 #include "rig/engine_frames.h"
@@ -38,51 +40,98 @@ void add_transform(lo_message m, const Eigen::Vector3d& p, const Eigen::Quaterni
 
 const char* unity_bone_name(int bone) { return bone >= 0 && bone < kBoneCount ? kUnityNames[bone] : nullptr; }
 
-struct VmcSender::Impl {
-  lo_address address = nullptr;
-};
+namespace {
 
-VmcSender::VmcSender(const std::string& host, uint16_t port) : impl_(std::make_unique<Impl>()) {
-  impl_->address = lo_address_new(host.c_str(), std::to_string(port).c_str());
-  if (!impl_->address) throw Error(Errc::invalid_argument, "VMC: cannot send to " + host + ":" + std::to_string(port));
-}
-
-VmcSender::~VmcSender() { lo_address_free(impl_->address); }
-
-void VmcSender::send(const FrameResult& frame) {
+lo_bundle new_bundle() {
   // LO_TT_IMMEDIATE's value, without its C99 compound literal (not C++).
   lo_timetag immediate;
   immediate.sec = 0;
   immediate.frac = 1;
-  lo_bundle bundle = lo_bundle_new(immediate);
-  const SkeletonPose& pose = frame.person_or_blank(0).bones;  // VMC drives one avatar: the first person
-  const bool ok = pose[kBoneRoot].valid;
+  return lo_bundle_new(immediate);
+}
+
+// One avatar's bundle: /VMC/Ext/OK, /VMC/Ext/T, and the root and bones when the person has a pose.
+void add_person(lo_bundle bundle, const SkeletonPose* pose, int64_t timestamp_us) {
+  const bool ok = pose && (*pose)[kBoneRoot].valid;
   lo_message status = lo_message_new();
   lo_message_add_int32(status, ok ? 1 : 0);
   lo_bundle_add_message(bundle, "/VMC/Ext/OK", status);
   lo_message time = lo_message_new();
-  lo_message_add_float(time, static_cast<float>(frame.info.timestamp_us * 1e-6));
+  lo_message_add_float(time, static_cast<float>(timestamp_us * 1e-6));
   lo_bundle_add_message(bundle, "/VMC/Ext/T", time);
-  if (ok) {
-    lo_message root = lo_message_new();
-    lo_message_add_string(root, "root");
-    add_transform(root, pose[kBoneRoot].head, pose[kBoneRoot].global);
-    lo_bundle_add_message(bundle, "/VMC/Ext/Root/Pos", root);
-    for (int b = 0; b < kBoneCount; ++b) {
-      if (!pose[b].valid) continue;
-      lo_message m = lo_message_new();
-      lo_message_add_string(m, kUnityNames[b]);
-      // Hips carry the root transform already: their local pose is identity.
-      if (b == kBoneRoot)
-        add_transform(m, Eigen::Vector3d::Zero(), Eigen::Quaterniond::Identity());
-      else
-        add_transform(m, rest_offset(b, pose), pose[b].local);
-      lo_bundle_add_message(bundle, "/VMC/Ext/Bone/Pos", m);
-    }
+  if (!ok) return;
+  lo_message root = lo_message_new();
+  lo_message_add_string(root, "root");
+  add_transform(root, (*pose)[kBoneRoot].head, (*pose)[kBoneRoot].global);
+  lo_bundle_add_message(bundle, "/VMC/Ext/Root/Pos", root);
+  for (int b = 0; b < kBoneCount; ++b) {
+    if (!(*pose)[b].valid) continue;
+    lo_message m = lo_message_new();
+    lo_message_add_string(m, kUnityNames[b]);
+    // Hips carry the root transform already: their local pose is identity.
+    if (b == kBoneRoot)
+      add_transform(m, Eigen::Vector3d::Zero(), Eigen::Quaterniond::Identity());
+    else
+      add_transform(m, rest_offset(b, *pose), (*pose)[b].local);
+    lo_bundle_add_message(bundle, "/VMC/Ext/Bone/Pos", m);
   }
-  if (lo_send_bundle(impl_->address, bundle) < 0)
-    log(LogLevel::warning, std::string("VMC: send failed: ") + lo_address_errstr(impl_->address));
-  lo_bundle_free_recursive(bundle);
+}
+
+}  // namespace
+
+struct VmcSender::Impl {
+  std::vector<lo_address> addresses;  // one per slot
+  ~Impl() {
+    for (lo_address a : addresses) lo_address_free(a);
+  }
+};
+
+VmcSender::VmcSender(const std::string& host, uint16_t port, uint32_t slots)
+    : impl_(std::make_unique<Impl>()), slot_ids_(std::max<uint32_t>(slots, 1), 0) {
+  if (port + slot_ids_.size() - 1 > 65535)
+    throw Error(Errc::invalid_argument, "VMC: ports " + std::to_string(port) + ".." +
+                                            std::to_string(port + slot_ids_.size() - 1) + " run past 65535");
+  for (size_t n = 0; n < slot_ids_.size(); ++n) {
+    const std::string p = std::to_string(port + n);
+    lo_address a = lo_address_new(host.c_str(), p.c_str());
+    if (!a) throw Error(Errc::invalid_argument, "VMC: cannot send to " + host + ":" + p);
+    impl_->addresses.push_back(a);
+  }
+}
+
+VmcSender::~VmcSender() = default;
+
+void VmcSender::assign_slots(const FrameResult& frame) {
+  auto present = [&](uint32_t id) {
+    for (const PersonResult& p : frame.people)
+      if (p.id == id) return true;
+    return false;
+  };
+  for (uint32_t& id : slot_ids_)
+    if (id != 0 && !present(id)) id = 0;
+  for (const PersonResult& p : frame.people) {  // in id order: the earlier arrival gets the lower slot
+    if (std::find(slot_ids_.begin(), slot_ids_.end(), p.id) != slot_ids_.end()) continue;
+    auto free_slot = std::find(slot_ids_.begin(), slot_ids_.end(), 0u);
+    if (free_slot == slot_ids_.end()) break;
+    *free_slot = p.id;
+  }
+}
+
+void VmcSender::send(const FrameResult& frame) {
+  std::vector<uint32_t> before = slot_ids_;
+  assign_slots(frame);
+  for (size_t n = 0; n < slot_ids_.size(); ++n) {
+    const PersonResult* person = nullptr;
+    for (const PersonResult& p : frame.people)
+      if (p.id == slot_ids_[n]) person = &p;
+    // An empty slot says so once (and the single slot every frame, as VMC senders do when tracking is lost).
+    if (!person && before[n] == 0 && slot_ids_.size() > 1) continue;
+    lo_bundle bundle = new_bundle();
+    add_person(bundle, person ? &person->bones : nullptr, frame.info.timestamp_us);
+    if (lo_send_bundle(impl_->addresses[n], bundle) < 0)
+      log(LogLevel::warning, std::string("VMC: send failed: ") + lo_address_errstr(impl_->addresses[n]));
+    lo_bundle_free_recursive(bundle);
+  }
 }
 
 }  // namespace octocap

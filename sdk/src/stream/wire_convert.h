@@ -18,9 +18,20 @@ struct PoseBuffers {
 
 void fill_pose(const FrameResult& frame, uint32_t source_id, uint32_t definition_counter, PoseBuffers& out);
 
-// Checks a received Pose (version, sizes, finite numbers) and turns it into a FrameResult. On failure returns
-// false with the reason in `why`.
+constexpr size_t kWirePeople = 16;  // the IDL's bound on PeopleFrame.people (= OCTOCAP_MAX_PEOPLE)
+
+// The same for every person of the frame (the PeopleFrame topic of several-people sessions).
+struct PeopleBuffers {
+  std::vector<PoseBuffers> people;  // one person's sequences each (their `sample` unused)
+  std::vector<octocap_wire_PersonPose> samples;
+  octocap_wire_PeopleFrame sample{};
+};
+void fill_people(const FrameResult& frame, uint32_t source_id, uint32_t definition_counter, PeopleBuffers& out);
+
+// Checks a received Pose or PeopleFrame sample (version, sizes, finite numbers, person ids) and turns it into a
+// FrameResult. On failure returns false with the reason in `why`.
 bool read_pose(const octocap_wire_Pose& in, LayoutId layout, FrameResult& out, std::string& why);
+bool read_people(const octocap_wire_PeopleFrame& in, LayoutId layout, FrameResult& out, std::string& why);
 
 struct Name32 {
   char s[32];
