@@ -56,7 +56,7 @@ namespace Octocap.Tests
             }
         }
 
-        static float[,] TPoseBody25()
+        internal static float[,] TPoseBody25()
         {
             // Nose, Neck, RShoulder, RElbow, RWrist, LShoulder, LElbow, LWrist, MidHip, RHip, RKnee, RAnkle, LHip,
             // LKnee, LAnkle, REye, LEye, REar, LEar, LBigToe, LSmallToe, LHeel, RBigToe, RSmallToe, RHeel

@@ -21,5 +21,22 @@ namespace Octocap.Avatar
                 return true;
             }
         }
+
+        /// <summary>The same for the person <paramref name="by"/> and <paramref name="n"/> choose: a slot (the n-th
+        /// person to appear, kept while tracked), an id, or an index.</summary>
+        public static bool TryReadBones(IFrameSource source, BindPersonBy by, int n, CoordFrame frame, BonePose[] bones)
+        {
+            if (source == null) throw new ArgumentNullException(nameof(source));
+            if (bones == null || bones.Length < (int)BoneId.Count)
+                throw new ArgumentException("bones needs " + (int)BoneId.Count + " entries", nameof(bones));
+            using (Frame f = source.TryGetFrame())
+            {
+                if (f == null) return false;
+                int person = PersonSlots.Resolve(source, f, by, n);
+                if (person < 0) return false;
+                f.GetBones(person, frame, bones);
+                return true;
+            }
+        }
     }
 }

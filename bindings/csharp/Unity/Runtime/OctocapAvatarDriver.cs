@@ -4,6 +4,7 @@ using System;
 using Octocap;
 using Octocap.Avatar;
 using UnityEngine;
+using UnityEngine.Serialization;
 
 [RequireComponent(typeof(Animator))]
 public sealed class OctocapAvatarDriver : MonoBehaviour
@@ -12,8 +13,11 @@ public sealed class OctocapAvatarDriver : MonoBehaviour
     public bool driveRootPosition = true;
     public Vector3 rootOffset = Vector3.zero;
 
-    /// <summary>Which person of each frame drives this avatar (0: the first; several avatars can share a source).</summary>
-    public int personIndex = 0;
+    /// <summary>How <see cref="person"/> picks who drives this avatar: Slot (default: the n-th person to appear,
+    /// kept while tracked, so the avatar never jumps to someone else), Id (octocap's person id), or Index (the n-th
+    /// person of each frame). Several avatars can share a source: with Slot 0, 1, 2 ... each gets its own person.</summary>
+    public BindPersonBy bindBy = BindPersonBy.Slot;
+    [FormerlySerializedAs("personIndex")] public int person = 0;
 
     /// <summary>Where frames come from: a local Session (fed by your detector or OctocapCameraRig) or a Subscriber
     /// (a stream from another machine). The driver only reads it.</summary>
@@ -52,7 +56,7 @@ public sealed class OctocapAvatarDriver : MonoBehaviour
     void LateUpdate()
     {
         if (Source == null || !_retargeter.IsCalibrated) return;
-        if (!FrameReader.TryReadBones(Source, personIndex, CoordFrame.Unity, _bones)) return;  // nobody yet: hold the pose
+        if (!FrameReader.TryReadBones(Source, bindBy, person, CoordFrame.Unity, _bones)) return;  // nobody yet: hold the pose
         _retargeter.Smoothing = smoothing;
         Quat[] world = _retargeter.Update(_bones);
         for (int b = 0; b < _targets.Length; ++b)

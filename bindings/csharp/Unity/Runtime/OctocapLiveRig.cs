@@ -13,7 +13,7 @@ public sealed class OctocapLiveRig : MonoBehaviour
     public string[] cameras = new string[0];
     public string model = "movenet-lightning";
     public DetectMode mode = DetectMode.Crop;
-    /// <summary>Avatars driven by this capture (each by its personIndex).</summary>
+    /// <summary>Avatars driven by this capture (each by its bindBy and person: Slot 0, 1, ... one person each).</summary>
     public OctocapAvatarDriver[] avatars = new OctocapAvatarDriver[0];
 
     public Live Live { get; private set; }

@@ -11,8 +11,11 @@ public partial class OctocapSkeletonDriver : Node3D
     /// <summary>Skeleton bone name per octocap bone (BoneId order); empty = Godot's humanoid profile names.</summary>
     [Export] public string[] BoneNameOverrides = new string[0];
 
-    /// <summary>Which person of each frame drives this skeleton (0: the first).</summary>
-    [Export] public int PersonIndex = 0;
+    /// <summary>How <see cref="Person"/> picks who drives this skeleton: Slot (default: the n-th person to appear,
+    /// kept while tracked, so the skeleton never jumps to someone else), Id (octocap's person id), or Index (the n-th
+    /// person of each frame). Several skeletons can share a source: with Slot 0, 1, 2 ... each gets its own person.</summary>
+    [Export] public BindPersonBy BindBy = BindPersonBy.Slot;
+    [Export] public int Person = 0;
 
     /// <summary>Where frames come from: a Session or a Subscriber; the driver only reads it.</summary>
     public IFrameSource Source { get; set; }
@@ -50,7 +53,7 @@ public partial class OctocapSkeletonDriver : Node3D
     public override void _Process(double delta)
     {
         if (Source == null || !_retargeter.IsCalibrated) return;
-        if (!FrameReader.TryReadBones(Source, PersonIndex, CoordFrame.Godot, _bones)) return;  // nobody yet: hold the pose
+        if (!FrameReader.TryReadBones(Source, BindBy, Person, CoordFrame.Godot, _bones)) return;  // nobody yet: hold the pose
         _retargeter.Smoothing = Smoothing;
         Quat[] world = _retargeter.Update(_bones);
         // Parents come before children in BoneId order, so each parent's new global pose is already set.
