@@ -1,7 +1,10 @@
 // `octocap solve --people`: several people from OpenPose JSON (synthetic, known truth) and from Pose2Sim's real
-// two-person videos (detected here), through the command line as a user runs it.
+// two-person videos (detected here), through the command line as a user runs it; what goes out of it (DDS to another
+// process, the viewer drawing everyone).
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
+
+#include <opencv2/imgcodecs.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -293,5 +296,44 @@ TEST_CASE("octocap solve --people auto --publish: another process receives every
   CHECK(people >= 3 * 30 - 3);
   for (octocap_frame_t* f : frames) octocap_frame_release(f);
   (void)crowd;
+}
+#endif
+
+#if defined(OCTOCAP_VIEWER_PATH)  // the viewer and DDS are built
+TEST_CASE("octocap-viewer renders one character per person of a several-people stream", "[people]") {
+  const uint32_t domain = testing::loopback_dds_domain() + 11;
+  testing::TempDir dir;
+  synth::RigOptions rig;
+  rig.distortion = false;  // the renderer draws a pinhole
+  const Calibration calib = synth::make_camera_ring(rig);
+  const auto crowd = synth::write_crowd_take(calib, 3, 10, dir.path().string(), 4);
+  const std::string publisher = std::string(OCTOCAP_CLI_PATH) + " solve --calibration " + dir.file("calibration.toml") +
+                                " --keypoints " + dir.file("keypoints") + " --output " + dir.file("pub.trc") +
+                                " --people auto --filter none --publish --publish-qos record --wait-subscribers 1" +
+                                " --quiet --domain " + std::to_string(domain);
+  const testing::Run r = testing::run_command(
+      "(" + publisher + " > /dev/null 2>&1 &); " + OCTOCAP_VIEWER_PATH + " --subscribe --qos record --domain " +
+      std::to_string(domain) + " --frames " + dir.file("live") + " --max-frames 1 --calibration " +
+      dir.file("calibration.toml") + " --camera " + calib[0].name + " --size 640x360 --no-grid");
+  INFO(r.output);
+  REQUIRE(r.status == 0);
+  const cv::Mat picture = cv::imread(dir.file("live/frame_000000.png"), cv::IMREAD_COLOR);
+  REQUIRE(picture.cols == 640);
+  // Each person's hips (frame 0 of the truth), projected by the calibration at half size, are on a character.
+  for (size_t p = 0; p < 3; ++p) {
+    const Eigen::Vector2d hip = calib[0].project(crowd[p][0][8]) * 0.5;  // BODY_25 MidHip
+    INFO("person " << p << " at " << hip.transpose());
+    REQUIRE(hip.x() >= 3);
+    REQUIRE(hip.x() < 637);
+    REQUIRE(hip.y() >= 3);
+    REQUIRE(hip.y() < 357);
+    int body = 0;
+    for (int dy = -2; dy <= 2; ++dy)
+      for (int dx = -2; dx <= 2; ++dx) {
+        const cv::Vec3b bgr = picture.at<cv::Vec3b>(static_cast<int>(hip.y()) + dy, static_cast<int>(hip.x()) + dx);
+        body += std::abs(bgr[2] - 237) + std::abs(bgr[1] - 240) + std::abs(bgr[0] - 245) >= 6;
+      }
+    CHECK(body >= 20);
+  }
 }
 #endif

@@ -141,8 +141,7 @@ int run(const Options& o) {
                  if (scene.live()) scene.take_live(0);
                  else scene.pose(v.frame * o.step);
                  const ViewCamera cam = orbit_camera(scene.root(), v.distance, v.yaw, v.pitch, 45, w, h);
-                 renderer->draw(cam, scene.posed() ? scene.vertices() : std::vector<SkinnedVertices>{}, scene.placement(),
-                                scene.skeleton(), !o.no_grid, scene.floor_y());
+                 renderer->draw(cam, scene.drawables(), scene.skeletons(), !o.no_grid, scene.floor_y());
                });
     return 0;
   }
@@ -187,7 +186,7 @@ int run(const Options& o) {
         renderer = std::make_unique<Renderer>(context->gl(), scene.meshes());
         if (written == 0) std::fprintf(stderr, "  rendering with %s\n", context->renderer_name().c_str());
       }
-      renderer->draw(c.view, scene.vertices(), scene.placement(), scene.skeleton(), !o.no_grid, scene.floor_y());
+      renderer->draw(c.view, scene.drawables(), scene.skeletons(), !o.no_grid, scene.floor_y());
       char name[64];
       std::snprintf(name, sizeof name, "frame_%06d.png", out_index);
       const fs::path dir = per_camera_folders ? fs::path(o.frames_dir) / c.name : fs::path(o.frames_dir);
@@ -205,7 +204,7 @@ int main(int argc, char** argv) {
   CLI::App app{"octocap-viewer: a skinned character driven by octocap motion, rendered to PNG or a window"};
   Options o;
   auto* motion = app.add_option("--motion", o.motion, "Motion: TRC or CSV from octocap solve, or a BVH")->check(CLI::ExistingFile);
-  auto* live = app.add_flag("--subscribe", o.subscribe, "Live poses over DDS from octocap (a session or octocap solve --publish)");
+  auto* live = app.add_flag("--subscribe", o.subscribe, "Live poses over DDS from octocap (a session or octocap solve --publish); one character per person");
   motion->excludes(live);
   app.add_option("--domain", o.domain, "With --subscribe: DDS domain id")->capture_default_str();
   app.add_option("--topic", o.topic, "With --subscribe: topic base name")->capture_default_str();

@@ -177,6 +177,11 @@ void Renderer::upload_lines(const std::vector<float>& v) {
 void Renderer::draw(const ViewCamera& camera, const std::vector<SkinnedVertices>& meshes,
                     const Eigen::Affine3f& model_to_world, const std::vector<Segment>& skeleton, bool grid,
                     float floor_y) {
+  draw(camera, std::vector<Drawable>{Drawable{&meshes, model_to_world}}, skeleton, grid, floor_y);
+}
+
+void Renderer::draw(const ViewCamera& camera, const std::vector<Drawable>& characters,
+                    const std::vector<Segment>& skeleton, bool grid, float floor_y) {
   gl_.Viewport(0, 0, camera.width, camera.height);
   gl_.ClearColor(0.93f, 0.94f, 0.96f, 1.0f);
   gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -197,20 +202,26 @@ void Renderer::draw(const ViewCamera& camera, const std::vector<SkinnedVertices>
     upload_lines(lines);
   }
 
+  // The first character keeps the single-character colour; the others are told apart by theirs.
+  static const float kColours[][3] = {{0.85f, 0.62f, 0.45f}, {0.45f, 0.62f, 0.85f}, {0.55f, 0.80f, 0.50f},
+                                      {0.85f, 0.50f, 0.70f}, {0.80f, 0.78f, 0.40f}, {0.55f, 0.50f, 0.85f}};
   gl_.UseProgram(mesh_program_);
-  const Eigen::Matrix4f model_view = camera.view * model_to_world.matrix();
-  gl_.UniformMatrix4fv(gl_.GetUniformLocation(mesh_program_, "model_view"), 1, GL_FALSE, model_view.data());
   gl_.UniformMatrix4fv(gl_.GetUniformLocation(mesh_program_, "projection"), 1, GL_FALSE, camera.projection.data());
-  const float colour[3] = {0.85f, 0.62f, 0.45f};
-  gl_.Uniform3fv(gl_.GetUniformLocation(mesh_program_, "colour"), 1, colour);
-  for (size_t m = 0; m < meshes.size() && m < vaos_.size(); ++m) {
-    const size_t n = meshes[m].positions.size();
-    gl_.BindVertexArray(vaos_[m]);
-    gl_.BindBuffer(GL_ARRAY_BUFFER, vbos_[m]);
-    gl_.BufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(n * 3 * sizeof(float)), meshes[m].positions.data());
-    gl_.BufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(n * 3 * sizeof(float)),
-                      static_cast<GLsizeiptr>(n * 3 * sizeof(float)), meshes[m].normals.data());
-    gl_.DrawElements(GL_TRIANGLES, static_cast<int>(index_counts_[m]), GL_UNSIGNED_INT, nullptr);
+  for (size_t c = 0; c < characters.size(); ++c) {
+    if (!characters[c].meshes) continue;
+    const std::vector<SkinnedVertices>& meshes = *characters[c].meshes;
+    const Eigen::Matrix4f model_view = camera.view * characters[c].model_to_world.matrix();
+    gl_.UniformMatrix4fv(gl_.GetUniformLocation(mesh_program_, "model_view"), 1, GL_FALSE, model_view.data());
+    gl_.Uniform3fv(gl_.GetUniformLocation(mesh_program_, "colour"), 1, kColours[c % 6]);
+    for (size_t m = 0; m < meshes.size() && m < vaos_.size(); ++m) {
+      const size_t n = meshes[m].positions.size();
+      gl_.BindVertexArray(vaos_[m]);
+      gl_.BindBuffer(GL_ARRAY_BUFFER, vbos_[m]);
+      gl_.BufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(n * 3 * sizeof(float)), meshes[m].positions.data());
+      gl_.BufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(n * 3 * sizeof(float)),
+                        static_cast<GLsizeiptr>(n * 3 * sizeof(float)), meshes[m].normals.data());
+      gl_.DrawElements(GL_TRIANGLES, static_cast<int>(index_counts_[m]), GL_UNSIGNED_INT, nullptr);
+    }
   }
 
   if (!skeleton.empty()) {

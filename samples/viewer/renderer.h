@@ -24,6 +24,12 @@ ViewCamera orbit_camera(const Eigen::Vector3f& target, float distance, float yaw
 
 using Segment = std::pair<Eigen::Vector3f, Eigen::Vector3f>;
 
+// One character to draw: its skinned meshes (model space, the renderer's topology) and where they stand.
+struct Drawable {
+  const std::vector<SkinnedVertices>* meshes = nullptr;
+  Eigen::Affine3f model_to_world = Eigen::Affine3f::Identity();
+};
+
 class Renderer {
  public:
   // Needs a current OpenGL 3.3 core context; throws std::runtime_error with the shader log on failure.
@@ -35,6 +41,9 @@ class Renderer {
   // model_to_world places the skinned (model space) vertices; skeleton segments and the grid are in world space.
   void draw(const ViewCamera& camera, const std::vector<SkinnedVertices>& meshes, const Eigen::Affine3f& model_to_world,
             const std::vector<Segment>& skeleton, bool grid, float floor_y);
+  // Several characters of the same model (one per person), each in a colour of its own.
+  void draw(const ViewCamera& camera, const std::vector<Drawable>& characters, const std::vector<Segment>& skeleton,
+            bool grid, float floor_y);
 
  private:
   void upload_lines(const std::vector<float>& vertices);

@@ -18,7 +18,6 @@ void Scene::load_model() {
   map_ = find_bone_map(character_);
   if (!options_.bone_map.empty()) apply_bone_map_file(character_, options_.bone_map, map_);
   retarget_ = std::make_unique<Retargeter>(character_, map_);
-  skinned_.resize(character_.meshes.size());
 }
 
 Scene::Scene(octocap::Subscriber* live, const SceneOptions& options) : live_(live), options_(options) { load_model(); }
@@ -26,20 +25,36 @@ Scene::Scene(octocap::Subscriber* live, const SceneOptions& options) : live_(liv
 bool Scene::take_live(int timeout_ms) {
   if (!live_) throw std::runtime_error("not a live scene");
   const std::optional<octocap::Frame> frame = live_->take(timeout_ms);
-  if (!frame || frame->person_count() == 0) return false;
-  const std::vector<octocap_bone_pose_t> bones = frame->bones(0, OCTOCAP_FRAME_RIG);
-  if (scale_ <= 0 && bones[OCTOCAP_BONE_L_UPPER_LEG].valid && bones[OCTOCAP_BONE_L_LOWER_LEG].valid) {
-    // Live: the first frame with a leg sets the scale and the floor (below its lowest joint).
-    scale_ = (bones[OCTOCAP_BONE_L_UPPER_LEG].length_m + bones[OCTOCAP_BONE_L_LOWER_LEG].length_m) /
-             retarget_->model_leg_length();
-    float lowest = std::numeric_limits<float>::infinity();
-    for (const auto& b : bones)
-      if (b.valid) lowest = std::min(lowest, b.head_position[1]);
-    floor_y_ = lowest - 0.5f;  // the lowest bone head is a knee: the floor is about half a metre below
+  if (!frame) return false;
+  // One figure per person of the frame, kept by id; a person who left takes their figure along.
+  std::vector<Figure> next;
+  for (uint32_t i = 0; i < frame->person_count(); ++i) {
+    const uint32_t id = frame->person(i).id;
+    const std::vector<octocap_bone_pose_t> bones = frame->bones(i, OCTOCAP_FRAME_RIG);
+    Figure figure;
+    for (Figure& f : figures_)
+      if (f.person_id == id) figure = std::move(f);
+    figure.person_id = id;
+    if (figure.scale <= 0 && bones[OCTOCAP_BONE_L_UPPER_LEG].valid && bones[OCTOCAP_BONE_L_LOWER_LEG].valid) {
+      // A person's first frame with a leg sets their scale; the first person's sets the floor (below the lowest
+      // joint, a knee: about half a metre).
+      figure.scale = (bones[OCTOCAP_BONE_L_UPPER_LEG].length_m + bones[OCTOCAP_BONE_L_LOWER_LEG].length_m) /
+                     retarget_->model_leg_length();
+      if (!has_floor_) {
+        float lowest = std::numeric_limits<float>::infinity();
+        for (const auto& b : bones)
+          if (b.valid) lowest = std::min(lowest, b.head_position[1]);
+        floor_y_ = lowest - 0.5f;
+        has_floor_ = true;
+      }
+    }
+    if (figure.scale <= 0) continue;
+    pose_bones(figure, bones.data());
+    next.push_back(std::move(figure));
   }
-  if (scale_ <= 0) return false;
-  pose_bones(bones.data());
-  return true;
+  figures_ = std::move(next);
+  posed_ = !figures_.empty();
+  return posed_;
 }
 
 Scene::Scene(const std::string& motion_path, const SceneOptions& options) : options_(options) {
@@ -67,12 +82,26 @@ Scene::Scene(const std::string& motion_path, const SceneOptions& options) : opti
   }
   if (legs.empty()) throw std::runtime_error(motion_path + ": no frame has a left leg (hip, knee, ankle)");
   std::nth_element(legs.begin(), legs.begin() + legs.size() / 2, legs.end());
-  scale_ = legs[legs.size() / 2] / retarget_->model_leg_length();
+  figures_.resize(1);
+  figures_[0].scale = legs[legs.size() / 2] / retarget_->model_leg_length();
   floor_y_ = std::isfinite(lowest) ? lowest - 0.08f : 0.0f;  // feet joints sit at the ankles
   centre_ = roots ? Eigen::Vector3f(sum / static_cast<float>(roots)) : Eigen::Vector3f::Zero();
 }
 
 Scene::~Scene() = default;
+
+std::vector<Drawable> Scene::drawables() const {
+  std::vector<Drawable> out;
+  if (!posed_) return out;
+  for (const Figure& f : figures_) out.push_back(Drawable{&f.skinned, f.placement});
+  return out;
+}
+
+std::vector<Segment> Scene::skeletons() const {
+  std::vector<Segment> out;
+  for (const Figure& f : figures_) out.insert(out.end(), f.segments.begin(), f.segments.end());
+  return out;
+}
 
 std::vector<const SkinnedMesh*> Scene::meshes() const {
   std::vector<const SkinnedMesh*> out;
@@ -85,33 +114,34 @@ void Scene::pose(int frame) {
   const uint32_t f = static_cast<uint32_t>(std::clamp(frame, 0, static_cast<int>(frames_) - 1));
   const octocap::Frame posed = motion_->frame(f);
   if (posed.person_count() == 0) return;  // a frame of the file with no joints: keep the last pose
-  pose_bones(posed.bones(0, OCTOCAP_FRAME_RIG).data());
+  pose_bones(figures_[0], posed.bones(0, OCTOCAP_FRAME_RIG).data());
 }
 
-void Scene::pose_bones(const octocap_bone_pose_t* bones) {
+void Scene::pose_bones(Figure& figure, const octocap_bone_pose_t* bones) {
   posed_ = true;
-  globals_ = retarget_->pose(bones);
-  const std::vector<Eigen::Affine3f>& globals = globals_;
+  figure.globals = retarget_->pose(bones);
+  const std::vector<Eigen::Affine3f>& globals = figure.globals;
   const auto skin = skin_matrices(character_, globals);
+  figure.skinned.resize(character_.meshes.size());
   for (size_t m = 0; m < character_.meshes.size(); ++m)
-    skin_mesh(character_.meshes[m], skin, Eigen::Affine3f::Identity(), options_.skinning, skinned_[m]);
+    skin_mesh(character_.meshes[m], skin, Eigen::Affine3f::Identity(), options_.skinning, figure.skinned[m]);
 
   // Placement with the take's fixed scale: the model root on the measured root.
   const Eigen::Affine3f unit = retarget_->placement(bones);
   const float frame_scale = unit.linear().col(0).norm();
-  placement_ = unit;
+  figure.placement = unit;
   if (frame_scale > 0) {
     const Eigen::Vector3f root_model = globals[map_[OCTOCAP_BONE_ROOT]].translation();
     const Eigen::Vector3f root_world = unit * root_model;
-    placement_.linear() = unit.linear() * (scale_ / frame_scale);
-    placement_.translation() = root_world - placement_.linear() * root_model;
+    figure.placement.linear() = unit.linear() * (figure.scale / frame_scale);
+    figure.placement.translation() = root_world - figure.placement.linear() * root_model;
   }
 
   if (bones[OCTOCAP_BONE_ROOT].valid)
-    root_ = {bones[OCTOCAP_BONE_ROOT].head_position[0], bones[OCTOCAP_BONE_ROOT].head_position[1],
+    figure.root = {bones[OCTOCAP_BONE_ROOT].head_position[0], bones[OCTOCAP_BONE_ROOT].head_position[1],
              bones[OCTOCAP_BONE_ROOT].head_position[2]};
   // The overlay is the measured skeleton: each bone from its head along its rotated rest direction.
-  segments_.clear();
+  figure.segments.clear();
   if (options_.skeleton_overlay)
     for (int b = 0; b < OCTOCAP_BONE_COUNT; ++b) {
       if (!bones[b].valid) continue;
@@ -120,20 +150,20 @@ void Scene::pose_bones(const octocap_bone_pose_t* bones) {
       const octocap_quat_t& q = bones[b].global_rotation;
       const Eigen::Vector3f head(bones[b].head_position[0], bones[b].head_position[1], bones[b].head_position[2]);
       const Eigen::Vector3f dir(info.rest_direction[0], info.rest_direction[1], info.rest_direction[2]);
-      segments_.emplace_back(head, head + Eigen::Quaternionf(q.w, q.x, q.y, q.z) * dir * bones[b].length_m);
+      figure.segments.emplace_back(head, head + Eigen::Quaternionf(q.w, q.x, q.y, q.z) * dir * bones[b].length_m);
     }
 
-  joints_.fill(Eigen::Vector3f::Constant(std::numeric_limits<float>::quiet_NaN()));
+  figure.joints.fill(Eigen::Vector3f::Constant(std::numeric_limits<float>::quiet_NaN()));
   for (int b = 0; b < OCTOCAP_BONE_COUNT; ++b) {
     if (map_[b] < 0) continue;
     octocap_bone_info_t info;
     octocap_bone_info(static_cast<uint32_t>(b), &info);
-    if (!joints_[info.head_joint].allFinite()) joints_[info.head_joint] = placement_ * retarget_->bone_head(globals, b);
+    if (!figure.joints[info.head_joint].allFinite()) figure.joints[info.head_joint] = figure.placement * retarget_->bone_head(globals, b);
   }
   for (int b = 0; b < OCTOCAP_BONE_COUNT; ++b) {
     if (map_[b] < 0) continue;
     octocap_bone_info_t info;
     octocap_bone_info(static_cast<uint32_t>(b), &info);
-    if (!joints_[info.tail_joint].allFinite()) joints_[info.tail_joint] = placement_ * retarget_->bone_tail(globals, b);
+    if (!figure.joints[info.tail_joint].allFinite()) figure.joints[info.tail_joint] = figure.placement * retarget_->bone_tail(globals, b);
   }
 }
