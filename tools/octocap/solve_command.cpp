@@ -148,6 +148,7 @@ int solve(const SolveOptions& o) {
   size_t solved_keypoints = 0, frames_with_result = 0, frames_multi = 0;
   double solve_ms = 0, detect_ms = 0;
   std::string detect_model;
+  octocap_detect_mode_t detect_mode = OCTOCAP_DETECT_CROP;
   Accuracy acc;
   acc.per_keypoint_sum.assign(K, 0);
   acc.per_keypoint_n.assign(K, 0);
@@ -178,6 +179,7 @@ int solve(const SolveOptions& o) {
       const octocap_detect_info_t dinfo = session.detect_info();
       detect_ms += dinfo.total_ms;
       detect_model = dinfo.model;
+      detect_mode = dinfo.mode;
       bool crowded = false;
       for (uint32_t v = 0; v < views; ++v) crowded = crowded || session.detections(v).size() > K;
       frames_multi += crowded;
@@ -265,7 +267,8 @@ int solve(const SolveOptions& o) {
               o.out.publish || o.out.vmc_port ? " (paced at --rate for streaming)" : "");
   if (source)
     std::printf("  2D detection:         %.1f ms/frame, model %s, mode %s (ONNX Runtime %s)\n",
-                done ? detect_ms / done : 0.0, detect_model.c_str(), o.detector.mode.c_str(),
+                done ? detect_ms / done : 0.0, detect_model.c_str(),
+                detect_mode == OCTOCAP_DETECT_PER_VIEW ? "per-view" : detect_mode == OCTOCAP_DETECT_MOSAIC ? "mosaic" : "crop",
                 octocap_onnxruntime_version());
   if (!o.ground_truth.empty()) {
     std::printf("  accuracy vs %s: MPJPE %.1f mm over %zu keypoint observations\n", o.ground_truth.c_str(),

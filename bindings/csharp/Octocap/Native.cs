@@ -272,6 +272,7 @@ namespace Octocap
         public Layout Layout;
         public uint KeypointCount;
         public Name32 Model;
+        public DetectMode Mode;
     }
 
     /// <summary>octocap_subscriber_config_t. Start from <see cref="SubscriberConfig.Default"/>.</summary>

@@ -63,6 +63,7 @@ static void layout(void) {
   FIELD(octocap_detect_info_t, preprocess_ms); FIELD(octocap_detect_info_t, inference_ms);
   FIELD(octocap_detect_info_t, inferences); FIELD(octocap_detect_info_t, layout);
   FIELD(octocap_detect_info_t, keypoint_count); FIELD(octocap_detect_info_t, model);
+  FIELD(octocap_detect_info_t, mode);
   SIZE(octocap_subscriber_config_t);
   FIELD(octocap_subscriber_config_t, struct_size); FIELD(octocap_subscriber_config_t, domain_id);
   FIELD(octocap_subscriber_config_t, qos); FIELD(octocap_subscriber_config_t, history_depth);

@@ -484,6 +484,10 @@ typedef struct octocap_detect_info_t {
   octocap_layout_t layout;    /**< The model's keypoint layout. */
   uint32_t keypoint_count;    /**< Keypoints per person. */
   char model[OCTOCAP_NAME_CAPACITY]; /**< The model card's name. */
+  /* 1.3 */
+  octocap_detect_mode_t mode;  /**< How the views were detected: the config's mode, except that a session solving
+                                    several people with no model named runs the multi-person model on whole views
+                                    (::OCTOCAP_DETECT_PER_VIEW: measured best there). */
 } octocap_detect_info_t;
 
 /** A 2D detector on its own (no calibration): what `octocap detect` uses to write OpenPose JSON. */

@@ -1,4 +1,5 @@
 // 2D detection entry points: the stand-alone detector, and the session's solve from images.
+#include <cstddef>
 #include <cstring>
 
 #include "capi/boundary.h"
@@ -58,7 +59,9 @@ std::vector<ImageView> image_views(const octocap_image_t* images, uint32_t count
 
 void fill_detect_info(const Detector& detector, octocap_detect_info_t* out) {
   require(out, "out");
-  if (out->struct_size != sizeof(octocap_detect_info_t))
+  // 1.2 callers' struct ends before `mode`.
+  const uint32_t size12 = static_cast<uint32_t>(offsetof(octocap_detect_info_t, mode));
+  if (out->struct_size != sizeof(octocap_detect_info_t) && out->struct_size != size12)
     throw Error(Errc::struct_size, "octocap_detect_info_t.struct_size must be " + std::to_string(sizeof(octocap_detect_info_t)));
   const DetectTimings& t = detector.timings();
   out->total_ms = static_cast<float>(t.total_ms);
@@ -68,6 +71,8 @@ void fill_detect_info(const Detector& detector, octocap_detect_info_t* out) {
   out->layout = static_cast<octocap_layout_t>(detector.card().layout);
   out->keypoint_count = static_cast<uint32_t>(layout(detector.card().layout).keypoints.size());
   copy_name(out->model, sizeof out->model, detector.card().name);
+  if (out->struct_size == sizeof(octocap_detect_info_t))
+    out->mode = static_cast<octocap_detect_mode_t>(detector.config().mode);  // tmp
 }
 
 }  // namespace octocap::capi

@@ -40,6 +40,34 @@ Rect crop_around(const Rect& box, double aspect) {
   return {box.x + box.width / 2 - w / 2, box.y + box.height / 2 - h / 2, w, h};
 }
 
+// Intersection over union of two boxes (0 when either is empty).
+double overlap(const Rect& a, const Rect& b) {
+  const double w = std::min(a.x + a.width, b.x + b.width) - std::max(a.x, b.x);
+  const double h = std::min(a.y + a.height, b.y + b.height) - std::max(a.y, b.y);
+  if (w <= 0 || h <= 0) return 0;
+  const double both = w * h;
+  return both / (a.width * a.height + b.width * b.height - both);
+}
+
+// The median pixel distance between the keypoints two people both have (confident), INFINITY with fewer than three.
+double keypoint_distance(const Person2D& a, const Person2D& b, double min_confidence) {
+  std::vector<double> d;
+  for (size_t k = 0; k < a.size() && k < b.size(); ++k)
+    if (a[k].confidence >= min_confidence && b[k].confidence >= min_confidence)
+      d.push_back(std::hypot(a[k].x - b[k].x, a[k].y - b[k].y));
+  if (d.size() < 3) return INFINITY;
+  std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
+  return d[d.size() / 2];
+}
+
+// Two detections of one person (two crops, a crop and the whole view): their keypoints lie on each other (under a
+// tenth of the body's height apart). Boxes would not tell: two people standing close, one in front of the other,
+// have boxes that overlap as much.
+bool same_person(const Person2D& a, const Person2D& b, double min_confidence) {
+  const double height = std::max(keypoint_box(a, min_confidence).height, keypoint_box(b, min_confidence).height);
+  return keypoint_distance(a, b, min_confidence) < 0.1 * height;
+}
+
 }  // namespace
 
 std::string models_directory() {
@@ -153,25 +181,77 @@ std::vector<std::vector<DetectedPerson>> Detector::detect_mosaic(const std::vect
   return split_mosaic_people(layout_plan, people, config_.min_confidence);
 }
 
+const Person2D& Detector::first_hint(size_t v) const {
+  static const Person2D none;
+  return v < hints_.size() && !hints_[v].empty() ? hints_[v].front() : none;
+}
+
 std::vector<DetectedPerson> Detector::detect_view(size_t v, const ImageView& view) {
   const Rect whole{0, 0, static_cast<double>(view.width), static_cast<double>(view.height)};
   if (config_.mode == DetectMode::per_view) return infer_region(view, whole);
-  // Crop: around the hint, else around last frame's person, else find the person on the whole view first.
+  // Crop: around each hinted person, else around last frame's people, else find someone on the whole view first.
   const double aspect = static_cast<double>(card_.input_width) / card_.input_height;
-  const Person2D no_hint;
-  const Person2D& hint = v < hints_.size() ? hints_[v] : no_hint;
-  Rect box = keypoint_box(hint, 0.01);
-  if (box.width <= 0 && box.height <= 0) box = last_boxes_[v];
-  if (box.width <= 0 && box.height <= 0) {
+  const size_t wanted = config_.find_new_people ? config_.max_people : 1;
+  // Each crop's box, and the person it should find (the hint; none for last frame's boxes).
+  std::vector<Rect> boxes;
+  std::vector<const Person2D*> expected;
+  if (v < hints_.size())
+    for (const Person2D& hint : hints_[v]) {
+      const Rect box = keypoint_box(hint, 0.01);
+      if ((box.width > 0 || box.height > 0) && boxes.size() < wanted) boxes.push_back(box), expected.push_back(&hint);
+    }
+  if (boxes.empty()) boxes = last_boxes_[v], expected.assign(boxes.size(), nullptr);
+  std::vector<DetectedPerson> people;
+  auto add_unless_seen = [&](DetectedPerson p) {
+    for (const DetectedPerson& q : people)
+      if (same_person(p.keypoints, q.keypoints, config_.min_confidence)) return;  // two crops, one person
+    people.push_back(std::move(p));
+  };
+  const bool searches = config_.find_new_people && card_.max_people > 1;
+  if (boxes.empty() && !searches) {
     auto found = infer_region(view, whole);
-    pick_people(found, config_.pick == PersonPick::all ? PersonPick::most_confident : config_.pick, hint, 1,
+    pick_people(found, config_.pick == PersonPick::all ? PersonPick::most_confident : config_.pick, first_hint(v), 1,
                 config_.min_confidence);
     if (found.empty()) return {};
-    box = keypoint_box(found[0].keypoints, config_.min_confidence);
+    const Rect box = keypoint_box(found[0].keypoints, config_.min_confidence);
     if (box.width <= 0 && box.height <= 0) return {};
+    boxes.push_back(box);
+    expected.push_back(nullptr);
   }
-  auto people = infer_region(view, crop_around(box, aspect));
-  last_boxes_[v] = people.empty() ? Rect{} : keypoint_box(people[0].keypoints, config_.min_confidence);
+  for (size_t i = 0; i < boxes.size(); ++i) {
+    auto found = infer_region(view, crop_around(boxes[i], aspect));
+    if (found.empty()) continue;
+    if (found.size() == 1 && !searches) {  // one person, as always
+      add_unless_seen(std::move(found[0]));
+      continue;
+    }
+    // A crop may show others too (a multi-person model, someone close by, in front): keep the one where the
+    // expected person's keypoints are, and none when nobody is there (they are hidden; someone else is not them).
+    size_t best = found.size();
+    double best_distance = INFINITY;
+    for (size_t j = 0; j < found.size(); ++j) {
+      const double d = expected[i] ? keypoint_distance(found[j].keypoints, *expected[i], config_.min_confidence)
+                                   : 1 - overlap(keypoint_box(found[j].keypoints, config_.min_confidence), boxes[i]);
+      if (d < best_distance) best_distance = d, best = j;
+    }
+    const double limit = expected[i] ? 0.25 * boxes[i].height : 0.7;
+    if (best < found.size() && best_distance < limit) add_unless_seen(std::move(found[best]));
+  }
+  // Several people: now and then the whole view, for whoever is not followed yet (needs a multi-person model); at
+  // once when someone of the last frame is missing (a crop lost its person, or the 3D solve lost them: someone
+  // stepped in front, and the whole view may still show them).
+  const size_t before = std::max(boxes.size(), last_boxes_[v].size());
+  if (searches && people.size() < wanted &&
+      (people.size() < std::max<size_t>(before, 1) || ++frames_since_search_[v] >= config_.new_people_every)) {
+    frames_since_search_[v] = 0;
+    for (DetectedPerson& p : infer_region(view, whole)) add_unless_seen(std::move(p));
+  }
+  // An empty box (nobody confident) is no box: next frame then looks at the whole view again.
+  last_boxes_[v].clear();
+  for (const DetectedPerson& p : people) {
+    const Rect box = keypoint_box(p.keypoints, config_.min_confidence);
+    if (box.width > 0 || box.height > 0) last_boxes_[v].push_back(box);
+  }
   return people;
 }
 
@@ -192,6 +272,7 @@ std::vector<std::vector<DetectedPerson>> Detector::detect(const std::vector<Imag
   } else {
     result.resize(views.size());
     last_boxes_.resize(views.size());
+    frames_since_search_.resize(views.size(), 0);
     // Views are independent here: up to parallel_ of them at once, each writing only its own slots.
     std::atomic<size_t> next{0};
     std::exception_ptr failure;
@@ -223,8 +304,7 @@ std::vector<std::vector<DetectedPerson>> Detector::detect(const std::vector<Imag
                                 }),
                  people.end());
   for (size_t v = 0; v < result.size(); ++v)
-    pick_people(result[v], config_.pick, v < hints_.size() ? hints_[v] : Person2D{}, config_.max_people,
-                config_.min_confidence);
+    pick_people(result[v], config_.pick, first_hint(v), config_.max_people, config_.min_confidence);
   timings_.total_ms = ms_since(t0);
   return result;
 }

@@ -26,8 +26,13 @@ struct DetectorConfig {
   int threads = 0;           // ONNX Runtime intra-op threads; 0 = its default (all cores / parallel views)
   int parallel_views = 0;    // views inferred at once (per view and crop); 0 = as many as cores
   int mosaic_tile = 256;     // mosaic cell height in pixels (the width follows the views' aspect)
-  size_t max_people = 4;     // per view, for PersonPick::all
+  size_t max_people = 4;     // per view, for PersonPick::all (and the crops of several people)
   double min_confidence = 0.3;
+  // Crop mode, several people: a crop per hinted person, and with a multi-person model a whole-view pass every
+  // new_people_every-th frame of a view that has fewer than max_people, for people not yet followed. The session
+  // turns it on when it solves several people. Off: one person, as always.
+  bool find_new_people = false;
+  int new_people_every = 10;
 };
 
 struct DetectTimings {
@@ -48,9 +53,10 @@ class Detector {
 
   // people[view], best first, in the views' pixels. Throws Error(invalid_argument) for a bad image.
   std::vector<std::vector<DetectedPerson>> detect(const std::vector<ImageView>& views);
-  // Where the person is expected in each view next frame (e.g. the last 3D joints reprojected); an empty
-  // person means no hint. Used by the crop mode and by PersonPick::nearest_previous.
-  void set_hints(std::vector<Person2D> hints) { hints_ = std::move(hints); }
+  // Where people are expected in each view next frame (the last 3D people reprojected): hints[view][person], the
+  // person followed first; an empty list or person means no hint. The crop mode crops each (up to max_people with
+  // find_new_people, else the first); PersonPick::nearest_previous uses the first.
+  void set_hints(std::vector<std::vector<Person2D>> hints) { hints_ = std::move(hints); }
 
   const ModelCard& card() const { return card_; }
   const DetectorConfig& config() const { return config_; }
@@ -69,8 +75,10 @@ class Detector {
   std::unique_ptr<OrtModel> model_;
   int parallel_ = 1;
   std::mutex timing_mutex_;
-  std::vector<Person2D> hints_;
-  std::vector<Rect> last_boxes_;  // the crop mode's fallback when no hint was given
+  const Person2D& first_hint(size_t v) const;
+  std::vector<std::vector<Person2D>> hints_;
+  std::vector<std::vector<Rect>> last_boxes_;  // the crop mode's fallback when no hint was given
+  std::vector<int> frames_since_search_;       // per view, find_new_people
   DetectTimings timings_;
 };
 

@@ -182,7 +182,7 @@ void KeypointNode::run(Camera& cam) {
     view.people.clear();
     for (DetectedPerson& d : found.at(0)) view.people.push_back(std::move(d.keypoints));
     // The crop path follows the most confident person of the last picture (a hub's 3D is not known here).
-    if (!view.people.empty()) cam.detector->set_hints({view.people.front()});
+    if (!view.people.empty()) cam.detector->set_hints({{view.people.front()}});
     view.frame_number = ++cam.frame_number;
     view.capture_time_us = monotonic_to_wall_us(frame.grab_us);
     view.stream_time_us = frame.stream_us;

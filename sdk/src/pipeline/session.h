@@ -144,7 +144,7 @@ class Session {
   std::unique_ptr<WorkerPool> pool_;
   std::vector<std::unique_ptr<FrameSink>> sinks_;  // DDS stream, VMC: fed every frame
 
-  std::vector<Person2D> reprojected_keypoints() const;
+  std::vector<std::vector<Person2D>> reprojected_people() const;
 
   std::unique_ptr<Detector> detector_;
   std::vector<std::vector<DetectedPerson>> detections_;
