@@ -3,6 +3,7 @@
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <memory>
@@ -245,6 +246,63 @@ TEST_CASE("samples of another wire version are rejected with a log message", "[s
   octocap_joint_t j[25];
   uint32_t n = 0;
   REQUIRE(octocap_subscriber_get_keypoints3d(sub.get(), j, 25, &n) == OCTOCAP_ERROR_NO_RESULT);
+}
+
+TEST_CASE("malformed several-people samples are rejected with a log message, never a crash", "[stream][people]") {
+  static int warnings = 0;
+  warnings = 0;
+  octocap_set_log_callback([](octocap_log_level_t l, const char* m, void*) {
+    if (l == OCTOCAP_LOG_WARNING && std::strstr(m, "rejected")) ++warnings;
+  }, OCTOCAP_LOG_DEBUG, nullptr);
+  Subscriber sub = subscribe("bad_people", OCTOCAP_QOS_RECORD);
+  {
+    octocap::StreamConfig sc;
+    sc.domain_id = test_domain();
+    sc.qos = octocap::StreamQos::record;
+    octocap::DdsParticipant participant(sc.domain_id);
+    const dds_entity_t topic = octocap::create_topic(participant.get(), &octocap_wire_PeopleFrame_desc, "bad_people_people");
+    dds_qos_t* q = octocap::pose_qos(sc);
+    const dds_entity_t w = dds_create_writer(participant.get(), topic, q, nullptr);
+    dds_delete_qos(q);
+    REQUIRE(w > 0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));  // discovery
+    // Two people with the same id, then a person whose sequences do not match the skeleton, then a NaN error.
+    octocap_wire_PersonPose people[2]{};
+    people[0].person_id = people[1].person_id = 3;
+    octocap_wire_PeopleFrame frame{};
+    frame.version = octocap_wire_VERSION;
+    frame.frame_number = 1;
+    frame.people._buffer = people;
+    frame.people._length = frame.people._maximum = 2;
+    REQUIRE(dds_write(w, &frame) == DDS_RETCODE_OK);
+    people[1].person_id = 4;  // ids fine now, but no keypoints, joints or bones
+    frame.frame_number = 2;
+    REQUIRE(dds_write(w, &frame) == DDS_RETCODE_OK);
+    frame.people._length = 0;
+    frame.mean_reprojection_error_px = NAN;
+    frame.frame_number = 3;
+    REQUIRE(dds_write(w, &frame) == DDS_RETCODE_OK);
+    octocap_frame_t* out = nullptr;
+    REQUIRE(octocap_subscriber_take_frame(sub.get(), 1500, &out) == OCTOCAP_STATUS_TIMEOUT);
+    REQUIRE(out == nullptr);
+    // An empty frame (nobody this frame) is a frame, with no people.
+    frame.mean_reprojection_error_px = 0;
+    frame.frame_number = 4;
+    REQUIRE(dds_write(w, &frame) == DDS_RETCODE_OK);
+    REQUIRE(octocap_subscriber_take_frame(sub.get(), 5000, &out) == OCTOCAP_OK);
+    octocap_frame_summary_t summary{};
+    summary.struct_size = sizeof summary;
+    REQUIRE(octocap_frame_get_summary(out, &summary) == OCTOCAP_OK);
+    CHECK(summary.frame_index == 4);
+    CHECK(summary.person_count == 0);
+    octocap_frame_release(out);
+  }
+  octocap_set_log_callback(nullptr, OCTOCAP_LOG_DEBUG, nullptr);
+  octocap_stream_info_t info;
+  REQUIRE(octocap_subscriber_get_stream_info(sub.get(), &info) == OCTOCAP_OK);
+  CHECK(info.rejected == 3);
+  CHECK(info.frames_received == 1);
+  CHECK(warnings == 3);
 }
 
 TEST_CASE("a publishing session survives subscriber churn and never blocks", "[stream]") {

@@ -213,6 +213,14 @@ TEST_CASE("VMC output with several people: a port each, kept while tracked, OK 0
   CHECK(gone_slot >= 0);
   close(socks[0]);
   close(socks[1]);
+
+  // Ports for every slot must exist: 16 people from port 65530 would run past 65535.
+  cfg.max_people = 0;
+  cfg.vmc_port = 65530;
+  octocap_session_t* bad = nullptr;
+  CHECK(octocap_session_create(&cfg, calib.get(), &bad) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  CHECK(std::string(octocap_last_error()).find("65535") != std::string::npos);
+  CHECK(bad == nullptr);
 }
 
 TEST_CASE("VMC output: a real OSC receiver gets every bone as octocap solved it, in Unity's frame", "[vmc]") {
