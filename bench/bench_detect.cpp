@@ -28,6 +28,8 @@ const Path kPaths[] = {{"per-view lightning", OCTOCAP_DETECT_PER_VIEW, "movenet-
                        {"per-view thunder", OCTOCAP_DETECT_PER_VIEW, "movenet-thunder", 1},
                        {"crop thunder", OCTOCAP_DETECT_CROP, "movenet-thunder", 1},
                        {"crop thunder, 2 views at once", OCTOCAP_DETECT_CROP, "movenet-thunder", 2},
+                       {"crop thunder int8", OCTOCAP_DETECT_CROP, "movenet-thunder-int8", 1},
+                       {"crop thunder int8, 2 views at once", OCTOCAP_DETECT_CROP, "movenet-thunder-int8", 2},
                        {"mosaic multipose", OCTOCAP_DETECT_MOSAIC, "movenet-multipose", 1}};
 
 // threads 0 with parallel views: each view's inference gets cores / parallel views.

