@@ -201,6 +201,7 @@ std::vector<DetectedPerson> Detector::detect_view(size_t v, const ImageView& vie
       if ((box.width > 0 || box.height > 0) && boxes.size() < wanted) boxes.push_back(box), expected.push_back(&hint);
     }
   if (boxes.empty()) boxes = last_boxes_[v], expected.assign(boxes.size(), nullptr);
+  if (boxes.size() > wanted) boxes.resize(wanted), expected.resize(wanted);
   std::vector<DetectedPerson> people;
   auto add_unless_seen = [&](DetectedPerson p) {
     for (const DetectedPerson& q : people)
