@@ -3,6 +3,7 @@
 #include <catch2/catch_test_macros.hpp>
 
 #include <algorithm>
+#include <cstddef>
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -202,6 +203,24 @@ TEST_CASE("detector bad input gives clear errors") {
   CHECK(octocap_detector_run(d.get(), &ok, 0) == OCTOCAP_ERROR_INVALID_ARGUMENT);
   uint32_t n = 0;
   CHECK(octocap_detector_people(d.get(), 3, &n) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+
+  // Figures: today's size gets the mode too; a 1.2 caller's struct (it ends before `mode`) is filled up to its end;
+  // any other size is refused.
+  REQUIRE(run_with(ok) == OCTOCAP_OK);
+  octocap_detect_info_t info{};
+  info.struct_size = sizeof info;
+  info.mode = -1;
+  REQUIRE(octocap_detector_info(d.get(), &info) == OCTOCAP_OK);
+  CHECK(info.mode == OCTOCAP_DETECT_PER_VIEW);
+  CHECK(info.inferences == 1);
+  octocap_detect_info_t old{};
+  old.struct_size = static_cast<uint32_t>(offsetof(octocap_detect_info_t, mode));
+  old.mode = -1;
+  REQUIRE(octocap_detector_info(d.get(), &old) == OCTOCAP_OK);
+  CHECK(old.inferences == 1);
+  CHECK(old.mode == -1);  // past the caller's struct: untouched
+  old.struct_size = 12;
+  CHECK(octocap_detector_info(d.get(), &old) == OCTOCAP_ERROR_STRUCT_SIZE);
 
   // A missing model, a missing card, a malformed card.
   Detector other;

@@ -132,6 +132,38 @@ int64_t take_index(octocap_subscriber_t* sub, int timeout_ms) {
   return info.frame_index;
 }
 
+// A writer that does not go through octocap (record profile), for samples octocap would never write.
+struct RawWriter {
+  octocap::DdsParticipant participant{test_domain()};
+  dds_entity_t writer = 0;
+  RawWriter(const dds_topic_descriptor_t* type, const std::string& topic) {
+    octocap::StreamConfig sc;
+    sc.qos = octocap::StreamQos::record;
+    const dds_entity_t t = octocap::create_topic(participant.get(), type, topic);
+    dds_qos_t* q = octocap::pose_qos(sc);
+    writer = dds_create_writer(participant.get(), t, q, nullptr);
+    dds_delete_qos(q);
+    REQUIRE(writer > 0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));  // discovery
+  }
+  template <class Sample>
+  void write(const Sample& sample) {
+    REQUIRE(dds_write(writer, &sample) == DDS_RETCODE_OK);
+  }
+};
+
+// Counts the library's "... rejected ..." warnings while it lives.
+struct RejectionLog {
+  static inline int warnings = 0;
+  RejectionLog() {
+    warnings = 0;
+    octocap_set_log_callback([](octocap_log_level_t l, const char* m, void*) {
+      if (l == OCTOCAP_LOG_WARNING && std::strstr(m, "rejected")) ++warnings;
+    }, OCTOCAP_LOG_DEBUG, nullptr);
+  }
+  ~RejectionLog() { octocap_set_log_callback(nullptr, OCTOCAP_LOG_DEBUG, nullptr); }
+};
+
 }  // namespace
 
 TEST_CASE("every frame arrives in another process bit-identical (record profile)", "[stream]") {
@@ -209,63 +241,37 @@ TEST_CASE("a publisher killed mid-stream and restarted is picked up again, the g
 }
 
 TEST_CASE("samples of another wire version are rejected with a log message", "[stream]") {
-  static int warnings = 0;
-  octocap_set_log_callback([](octocap_log_level_t l, const char* m, void*) {
-    if (l == OCTOCAP_LOG_WARNING && std::strstr(m, "rejected")) ++warnings;
-  }, OCTOCAP_LOG_DEBUG, nullptr);
+  const RejectionLog log;
   Subscriber sub = subscribe("bad_samples", OCTOCAP_QOS_RECORD);
   {
-    // A writer that does not go through octocap, sending a future version and a malformed pose.
-    octocap::StreamConfig sc;
-    sc.domain_id = test_domain();
-    sc.qos = octocap::StreamQos::record;
-    octocap::DdsParticipant p(sc.domain_id);
-    const dds_entity_t topic = octocap::create_topic(p.get(), &octocap_wire_Pose_desc, "bad_samples_pose");
-    dds_qos_t* q = octocap::pose_qos(sc);
-    const dds_entity_t w = dds_create_writer(p.get(), topic, q, nullptr);
-    dds_delete_qos(q);
-    REQUIRE(w > 0);
-    std::this_thread::sleep_for(std::chrono::milliseconds(500));  // discovery
+    // A future version and a malformed pose.
+    RawWriter w(&octocap_wire_Pose_desc, "bad_samples_pose");
     octocap_wire_Pose pose{};
     pose.version = 99;
-    REQUIRE(dds_write(w, &pose) == DDS_RETCODE_OK);
+    w.write(pose);
     pose.version = octocap_wire_VERSION;  // right version, but no keypoints / joints / bones
     pose.frame_number = 1;
-    REQUIRE(dds_write(w, &pose) == DDS_RETCODE_OK);
+    w.write(pose);
     REQUIRE(octocap_subscriber_take(sub.get(), 1500) == OCTOCAP_ERROR_NO_RESULT);  // 0.x: an error code
     octocap_frame_t* frame = reinterpret_cast<octocap_frame_t*>(0x1);
     REQUIRE(octocap_subscriber_take_frame(sub.get(), 100, &frame) == OCTOCAP_STATUS_TIMEOUT);  // 1.0: a status
     REQUIRE(frame == nullptr);
   }
-  octocap_set_log_callback(nullptr, OCTOCAP_LOG_DEBUG, nullptr);
   octocap_stream_info_t info;
   REQUIRE(octocap_subscriber_get_stream_info(sub.get(), &info) == OCTOCAP_OK);
   REQUIRE(info.rejected == 2);
   REQUIRE(info.frames_received == 0);
-  REQUIRE(warnings == 2);
+  REQUIRE(RejectionLog::warnings == 2);
   octocap_joint_t j[25];
   uint32_t n = 0;
   REQUIRE(octocap_subscriber_get_keypoints3d(sub.get(), j, 25, &n) == OCTOCAP_ERROR_NO_RESULT);
 }
 
 TEST_CASE("malformed several-people samples are rejected with a log message, never a crash", "[stream][people]") {
-  static int warnings = 0;
-  warnings = 0;
-  octocap_set_log_callback([](octocap_log_level_t l, const char* m, void*) {
-    if (l == OCTOCAP_LOG_WARNING && std::strstr(m, "rejected")) ++warnings;
-  }, OCTOCAP_LOG_DEBUG, nullptr);
+  const RejectionLog log;
   Subscriber sub = subscribe("bad_people", OCTOCAP_QOS_RECORD);
   {
-    octocap::StreamConfig sc;
-    sc.domain_id = test_domain();
-    sc.qos = octocap::StreamQos::record;
-    octocap::DdsParticipant participant(sc.domain_id);
-    const dds_entity_t topic = octocap::create_topic(participant.get(), &octocap_wire_PeopleFrame_desc, "bad_people_people");
-    dds_qos_t* q = octocap::pose_qos(sc);
-    const dds_entity_t w = dds_create_writer(participant.get(), topic, q, nullptr);
-    dds_delete_qos(q);
-    REQUIRE(w > 0);
-    std::this_thread::sleep_for(std::chrono::milliseconds(500));  // discovery
+    RawWriter w(&octocap_wire_PeopleFrame_desc, "bad_people_people");
     // Two people with the same id, then a person whose sequences do not match the skeleton, then a NaN error.
     octocap_wire_PersonPose people[2]{};
     people[0].person_id = people[1].person_id = 3;
@@ -274,21 +280,21 @@ TEST_CASE("malformed several-people samples are rejected with a log message, nev
     frame.frame_number = 1;
     frame.people._buffer = people;
     frame.people._length = frame.people._maximum = 2;
-    REQUIRE(dds_write(w, &frame) == DDS_RETCODE_OK);
+    w.write(frame);
     people[1].person_id = 4;  // ids fine now, but no keypoints, joints or bones
     frame.frame_number = 2;
-    REQUIRE(dds_write(w, &frame) == DDS_RETCODE_OK);
+    w.write(frame);
     frame.people._length = 0;
     frame.mean_reprojection_error_px = NAN;
     frame.frame_number = 3;
-    REQUIRE(dds_write(w, &frame) == DDS_RETCODE_OK);
+    w.write(frame);
     octocap_frame_t* out = nullptr;
     REQUIRE(octocap_subscriber_take_frame(sub.get(), 1500, &out) == OCTOCAP_STATUS_TIMEOUT);
     REQUIRE(out == nullptr);
     // An empty frame (nobody this frame) is a frame, with no people.
     frame.mean_reprojection_error_px = 0;
     frame.frame_number = 4;
-    REQUIRE(dds_write(w, &frame) == DDS_RETCODE_OK);
+    w.write(frame);
     REQUIRE(octocap_subscriber_take_frame(sub.get(), 5000, &out) == OCTOCAP_OK);
     octocap_frame_summary_t summary{};
     summary.struct_size = sizeof summary;
@@ -297,12 +303,11 @@ TEST_CASE("malformed several-people samples are rejected with a log message, nev
     CHECK(summary.person_count == 0);
     octocap_frame_release(out);
   }
-  octocap_set_log_callback(nullptr, OCTOCAP_LOG_DEBUG, nullptr);
   octocap_stream_info_t info;
   REQUIRE(octocap_subscriber_get_stream_info(sub.get(), &info) == OCTOCAP_OK);
   CHECK(info.rejected == 3);
   CHECK(info.frames_received == 1);
-  CHECK(warnings == 3);
+  CHECK(RejectionLog::warnings == 3);
 }
 
 TEST_CASE("a publishing session survives subscriber churn and never blocks", "[stream]") {

@@ -29,18 +29,9 @@ namespace Octocap.Tests
                 using (var session = new Session(cfg, calib))
                 {
                     // A T-posed body (rig frame: left is +X, facing +Z), turned 90 degrees about +Y, projected.
-                    float[,] tpose = TPoseBody25();
                     Quat yaw = QuatMath.FromAxisAngle(0, 1, 0, (float)(Math.PI / 2));
                     var kps = new Keypoint2D[5 * 25];
-                    for (int v = 0; v < 5; ++v)
-                        for (int k = 0; k < 25; ++k)
-                        {
-                            float x = tpose[k, 0], y = tpose[k, 1], z = tpose[k, 2];
-                            QuatMath.Rotate(yaw, ref x, ref y, ref z);
-                            double u, w;
-                            calib.Project(v, x, y, z, out u, out w);
-                            kps[v * 25 + k] = new Keypoint2D((float)u, (float)w, 0.9f);
-                        }
+                    for (int v = 0; v < 5; ++v) ProjectTPose(calib, v, yaw, 0, kps, v * 25);
                     session.Solve(kps, 5, 0);
                     var bones = new BonePose[(int)BoneId.Count];
                     session.GetBones(CoordFrame.Rig, bones);
@@ -56,7 +47,22 @@ namespace Octocap.Tests
             }
         }
 
-        internal static float[,] TPoseBody25()
+        /// <summary>The T-posed body turned by <paramref name="turn"/> and moved <paramref name="x0"/> metres along X,
+        /// projected into view <paramref name="v"/>: 25 keypoints from <paramref name="at"/>.</summary>
+        internal static void ProjectTPose(Calibration calib, int v, Quat turn, float x0, Keypoint2D[] kps, int at)
+        {
+            float[,] tpose = TPoseBody25();
+            for (int k = 0; k < 25; ++k)
+            {
+                float x = tpose[k, 0], y = tpose[k, 1], z = tpose[k, 2];
+                QuatMath.Rotate(turn, ref x, ref y, ref z);
+                double u, w;
+                calib.Project(v, x + x0, y, z, out u, out w);
+                kps[at + k] = new Keypoint2D((float)u, (float)w, 0.9f);
+            }
+        }
+
+        static float[,] TPoseBody25()
         {
             // Nose, Neck, RShoulder, RElbow, RWrist, LShoulder, LElbow, LWrist, MidHip, RHip, RKnee, RAnkle, LHip,
             // LKnee, LAnkle, REye, LEye, REar, LEar, LBigToe, LSmallToe, LHeel, RBigToe, RSmallToe, RHeel

@@ -50,8 +50,8 @@ namespace Octocap.Tests
                         for (int v = 0; v < 5; ++v)
                         {
                             int at = v * 25 * (both ? 2 : 1);
-                            if (both) { Project(calib, v, turned, -0.9f, kps, at); at += 25; }
-                            Project(calib, v, QuatMath.Identity, 0.9f, kps, at);
+                            if (both) { AvatarTests.ProjectTPose(calib, v, turned, -0.9f, kps, at); at += 25; }
+                            AvatarTests.ProjectTPose(calib, v, QuatMath.Identity, 0.9f, kps, at);
                             perView[v] = both ? 2u : 1u;
                         }
                         Assert.AreEqual(Result.Ok, session.Solve(kps, perView, f * 33333L));
@@ -78,20 +78,6 @@ namespace Octocap.Tests
                         Assert.IsFalse(FrameReader.TryReadBones(session, BindPersonBy.Id, (int)id + 100, CoordFrame.Rig, bones));
                     }
                 }
-            }
-        }
-
-        // A T-posed body (AvatarTests' BODY_25 T-pose) turned by `turn` and moved `x` metres sideways, into view v.
-        static void Project(Calibration calib, int v, Quat turn, float x0, Keypoint2D[] kps, int at)
-        {
-            float[,] tpose = AvatarTests.TPoseBody25();
-            for (int k = 0; k < 25; ++k)
-            {
-                float x = tpose[k, 0], y = tpose[k, 1], z = tpose[k, 2];
-                QuatMath.Rotate(turn, ref x, ref y, ref z);
-                double u, w;
-                calib.Project(v, x + x0, y, z, out u, out w);
-                kps[at + k] = new Keypoint2D((float)u, (float)w, 0.9f);
             }
         }
     }

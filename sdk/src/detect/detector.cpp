@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "core/layout.h"
+#include "core/stats.h"
 #include "detect/ort_model.h"
 
 #ifndef OCTOCAP_DEFAULT_MODELS_DIR
@@ -55,9 +56,7 @@ double keypoint_distance(const Person2D& a, const Person2D& b, double min_confid
   for (size_t k = 0; k < a.size() && k < b.size(); ++k)
     if (a[k].confidence >= min_confidence && b[k].confidence >= min_confidence)
       d.push_back(std::hypot(a[k].x - b[k].x, a[k].y - b[k].y));
-  if (d.size() < 3) return INFINITY;
-  std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
-  return d[d.size() / 2];
+  return d.size() < 3 ? INFINITY : median_in_place(d, INFINITY);
 }
 
 // Two detections of one person (two crops, a crop and the whole view): their keypoints lie on each other (under a

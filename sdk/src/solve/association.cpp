@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/stats.h"
 #include "solve/view_agreement.h"
 
 namespace octocap {
@@ -15,11 +16,7 @@ bool body_centre(const std::vector<Eigen::Vector3d>& pose, Eigen::Vector3d& out)
     if (p.allFinite())
       for (int a = 0; a < 3; ++a) axis[a].push_back(p[a]);
   if (axis[0].size() < 3) return false;
-  for (int a = 0; a < 3; ++a) {
-    auto mid = axis[a].begin() + static_cast<std::ptrdiff_t>(axis[a].size() / 2);
-    std::nth_element(axis[a].begin(), mid, axis[a].end());
-    out[a] = *mid;
-  }
+  for (int a = 0; a < 3; ++a) out[a] = median_in_place(axis[a], 0);
   return true;
 }
 

@@ -5,6 +5,8 @@
 #include <limits>
 #include <string>
 
+#include "core/stats.h"
+
 namespace octocap {
 namespace {
 
@@ -23,9 +25,7 @@ double build_difference(const std::vector<double>& a, const std::vector<double>&
   std::vector<double> d;
   for (size_t i = 0; i < a.size() && i < b.size(); ++i)
     if (std::isfinite(a[i]) && std::isfinite(b[i]) && b[i] > 0) d.push_back(std::abs(a[i] - b[i]) / b[i]);
-  if (d.size() < 3) return kNaN;
-  std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
-  return d[d.size() / 2];
+  return d.size() < 3 ? kNaN : median_in_place(d, kNaN);
 }
 
 // In double: the difference of two extreme int64 timestamps overflows int64.

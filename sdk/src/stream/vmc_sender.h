@@ -25,8 +25,6 @@ class VmcSender : public FrameSink {
   VmcSender& operator=(const VmcSender&) = delete;
   // Sends the frame; a bone octocap could not solve is left out, so receivers keep its last pose.
   void send(const FrameResult& frame);
-  // The person id each slot sends this frame (0: nobody).
-  const std::vector<uint32_t>& slots() const { return slot_ids_; }
   void publish(const FrameResult& frame) override { send(frame); }
 
  private:

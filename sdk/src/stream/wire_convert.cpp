@@ -119,6 +119,18 @@ bool read_person(const dds_sequence_octocap_wire_PointSample& keypoints,
   return true;
 }
 
+// The frame-wide fields Pose and PeopleFrame both carry (read_frame reads them back).
+template <class Sample>
+void fill_frame(const FrameResult& frame, uint32_t source_id, uint32_t definition_counter, Sample& w) {
+  w.source_id = source_id;
+  w.version = octocap_wire_VERSION;
+  w.frame_number = static_cast<uint64_t>(frame.info.frame_index);
+  w.timestamp_us = frame.info.timestamp_us;
+  w.definition_counter = definition_counter;
+  w.mean_reprojection_error_px = static_cast<float>(frame.info.mean_reprojection_error_px);
+  w.views_with_person = frame.info.views_with_person;
+}
+
 bool version_ok(uint32_t version, std::string& why) {
   if (version == octocap_wire_VERSION) return true;
   why = "wire version " + std::to_string(version) + ", this reader understands " + std::to_string(octocap_wire_VERSION);
@@ -154,13 +166,7 @@ void fill_pose(const FrameResult& frame, uint32_t source_id, uint32_t definition
   // The wire's Pose carries one person: the first (lowest id) of the frame.
   fill_person(frame.person_or_blank(0), out);
   octocap_wire_Pose& w = out.sample;
-  w.source_id = source_id;
-  w.version = octocap_wire_VERSION;
-  w.frame_number = static_cast<uint64_t>(frame.info.frame_index);
-  w.timestamp_us = frame.info.timestamp_us;
-  w.definition_counter = definition_counter;
-  w.mean_reprojection_error_px = static_cast<float>(frame.info.mean_reprojection_error_px);
-  w.views_with_person = frame.info.views_with_person;
+  fill_frame(frame, source_id, definition_counter, w);
   point_seq(w.keypoints, out.keypoints);
   point_seq(w.joints, out.joints);
   point_seq(w.bones, out.bones);
@@ -184,13 +190,7 @@ void fill_people(const FrameResult& frame, uint32_t source_id, uint32_t definiti
     point_seq(w.bones, out.people[i].bones);
   }
   octocap_wire_PeopleFrame& w = out.sample;
-  w.source_id = source_id;
-  w.version = octocap_wire_VERSION;
-  w.frame_number = static_cast<uint64_t>(frame.info.frame_index);
-  w.timestamp_us = frame.info.timestamp_us;
-  w.definition_counter = definition_counter;
-  w.mean_reprojection_error_px = static_cast<float>(frame.info.mean_reprojection_error_px);
-  w.views_with_person = frame.info.views_with_person;
+  fill_frame(frame, source_id, definition_counter, w);
   point_seq(w.people, out.samples);
 }
 
