@@ -180,6 +180,7 @@ TEST_CASE("bone quaternions from the C ABI rebuild the true skeleton", "[capi][r
     const SkeletonJoints rebuilt = testing::rebuild_from_bones(pose, root);
     const SkeletonJoints truth = testing::skeleton_from_keypoints(sc.motion.frames[f], LayoutId::body25);
     for (int j = 0; j < kJointCount; ++j) {
+      if (j == kRHeel || j == kLHeel) continue;  // no bone ends at a heel: it only rolls the foot
       sum += (rebuilt[j] - truth[j]).norm();
       ++n;
     }

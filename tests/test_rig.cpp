@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <tuple>
+#include <vector>
 
 #include "rig/bone_solver.h"
 #include "rig/engine_frames.h"
@@ -30,6 +32,11 @@ SkeletonJoints tpose() {
   j[kLFoot] = {0.1, 0.1, 0};
   j[kRKnee] = {-0.1, 0.55, 0};
   j[kRFoot] = {-0.1, 0.1, 0};
+  // Feet standing flat: toes ahead and below the ankle along the template, heels below and behind.
+  for (auto [ankle, toe, heel] : {std::tuple{kLFoot, kLToe, kLHeel}, std::tuple{kRFoot, kRToe, kRHeel}}) {
+    j[toe] = j[ankle] + 0.17 * tpose_directions()[kBoneLFoot];
+    j[heel] = j[ankle] + Eigen::Vector3d(0, -0.06, -0.05);
+  }
   return j;
 }
 
@@ -162,6 +169,49 @@ TEST_CASE("the head turns with the face: ears, else eyes, else the nose; held wh
   for (int i = 0; i < 10; ++i) held = twist_angle(solver.solve(j)[kBoneHead].local, up);
   CHECK(held > 0.7 * turn.angle());
   CHECK(held < turn.angle());
+}
+
+TEST_CASE("a foot flexes, points and rolls with its toes and heel; held while the heel is not seen", "[rig]") {
+  BoneSolver solver;
+  const SkeletonJoints rest = tpose();
+  const Eigen::Vector3d foot_axis = tpose_directions()[kBoneRFoot];
+  double worst = 0;
+  for (double flex : {-30.0, -10.0, 0.0, 20.0, 45.0})      // pointing the toes down is positive about +X
+    for (double roll : {-25.0, 0.0, 15.0}) {                // inversion / eversion about the foot's own axis
+      const Eigen::Quaterniond truth(Eigen::AngleAxisd(flex * M_PI / 180, Eigen::Vector3d::UnitX()) *
+                                     Eigen::AngleAxisd(roll * M_PI / 180, foot_axis));
+      SkeletonJoints j = rest;
+      for (int toe : {kRToe, kRHeel}) j[toe] = j[kRFoot] + truth * (rest[toe] - rest[kRFoot]);
+      const SkeletonPose pose = BoneSolver{}.solve(j);
+      REQUIRE(pose[kBoneRFoot].valid);
+      worst = std::max(worst, angle_between(pose[kBoneRFoot].local, truth));
+      solver.solve(j);
+    }
+  INFO("worst foot error " << worst * 180 / M_PI << " deg");
+  CHECK(worst < 1e-9);
+  // The last pose (45 deg pointed, rolled 15 deg) held with the heel gone: the roll stays, easing back slowly.
+  SkeletonJoints no_heel = rest;
+  const Eigen::Quaterniond last(Eigen::AngleAxisd(45 * M_PI / 180, Eigen::Vector3d::UnitX()) *
+                                Eigen::AngleAxisd(15 * M_PI / 180, foot_axis));
+  no_heel[kRToe] = no_heel[kRFoot] + last * (rest[kRToe] - rest[kRFoot]);
+  no_heel[kRHeel] = Eigen::Vector3d::Constant(std::nan(""));
+  std::vector<double> off;  // how far the held foot is from the last seen one, frame by frame
+  for (int i = 0; i < 10; ++i) {
+    const SkeletonPose pose = solver.solve(no_heel);
+    REQUIRE(pose[kBoneRFoot].valid);  // the toes alone still aim the foot
+    off.push_back(angle_between(pose[kBoneRFoot].local, last) * 180 / M_PI);
+  }
+  INFO("held foot off by " << off.front() << " deg, then " << off.back() << " deg after 10 frames");
+  CHECK(off.front() < 1.0);             // no snap to the toes-only answer (15 deg of roll away)
+  CHECK(off.back() < 0.3 * 15);         // eases back slowly
+  CHECK(off.back() > off.front());
+  // No toes (a layout without feet): no foot bone, everything else as before.
+  SkeletonJoints no_toes = rest;
+  no_toes[kRToe] = Eigen::Vector3d::Constant(std::nan(""));
+  const SkeletonPose pose = solve_bones(no_toes);
+  CHECK_FALSE(pose[kBoneRFoot].valid);
+  CHECK(pose[kBoneLFoot].valid);
+  CHECK(pose[kBoneRLowerLeg].valid);
 }
 
 TEST_CASE("a missing joint invalidates its bone and the bones below it", "[rig]") {

@@ -56,10 +56,10 @@ AngleStats compare(const std::vector<Eigen::Quaterniond>& truth, const std::vect
 
 }  // namespace
 
-TEST_CASE("bone rotations follow the rig's true rotations: hinge limbs, chest twist, head turn", "[rig][real]") {
+TEST_CASE("bone rotations follow the rig's true rotations: hinge limbs, chest twist, head turn, feet", "[rig][real]") {
   const BvhMotion bvh = read_bvh(synth::default_bvh_path());
   const size_t first = 0, count = 500, step = 4;
-  const synth::Motion motion = synth::load_cmu_motion(synth::default_bvh_path(), first, count, step);
+  const synth::Motion motion = synth::load_cmu_motion(synth::default_bvh_path(), first, count, step, true);
   synth::RigOptions rig;
   rig.cameras = 6;
   const Calibration calib = synth::make_camera_ring(rig);
@@ -82,7 +82,8 @@ TEST_CASE("bone rotations follow the rig's true rotations: hinge limbs, chest tw
                                    {kBoneRLowerArm, "RightForeArm"}, {kBoneLUpperArm, "LeftArm"},
                                    {kBoneLLowerArm, "LeftForeArm"}, {kBoneRUpperLeg, "RightUpLeg"},
                                    {kBoneRLowerLeg, "RightLeg"},   {kBoneLUpperLeg, "LeftUpLeg"},
-                                   {kBoneLLowerLeg, "LeftLeg"}};
+                                   {kBoneLLowerLeg, "LeftLeg"},     {kBoneRFoot, "RightFoot"},
+                                   {kBoneLFoot, "LeftFoot"}};
   std::vector<std::vector<Eigen::Quaterniond>> truth(kBoneCount), solved(kBoneCount), smallest(kBoneCount);
   std::vector<Eigen::Vector3d> P;
   std::vector<Eigen::Matrix3d> R;
@@ -110,7 +111,11 @@ TEST_CASE("bone rotations follow the rig's true rotations: hinge limbs, chest tw
                                    << ")");
     CHECK(now.median_deg < 5.0);
     CHECK(now.p90_deg < 12.0);
-    // Measuring the roll beats leaving it out, for every bone but the root (whose rotation the swing chain keeps).
-    if (p.bone != kBoneRoot) CHECK(now.p90_deg < before.p90_deg);
+    // Measuring the roll beats leaving it out, for every bone but the root (whose rotation the swing chain keeps) and
+    // the feet: CMU's feet hardly roll about their own axis (the swing from the shin is already their rotation), so
+    // their measured roll can only add noise; it must stay within a degree of the swing's (the roll itself is
+    // tested in tests/test_rig.cpp: a foot rolled 25 deg).
+    if (p.bone == kBoneRFoot || p.bone == kBoneLFoot) CHECK(now.p90_deg < before.p90_deg + 1.0);
+    else if (p.bone != kBoneRoot) CHECK(now.p90_deg < before.p90_deg);
   }
 }

@@ -73,6 +73,8 @@ Wanted wanted(int bone) {
     case OCTOCAP_BONE_L_UPPER_LEG: return {Side::left, {"upleg", "upperleg", "thigh", "hip", "femur"}};
     case OCTOCAP_BONE_R_LOWER_LEG: return {Side::right, {"leg", "lowerleg", "loleg", "shin", "calf", "knee", "tibia"}};
     case OCTOCAP_BONE_L_LOWER_LEG: return {Side::left, {"leg", "lowerleg", "loleg", "shin", "calf", "knee", "tibia"}};
+    case OCTOCAP_BONE_R_FOOT: return {Side::right, {"foot", "ankle", "tarsal"}};
+    case OCTOCAP_BONE_L_FOOT: return {Side::left, {"foot", "ankle", "tarsal"}};
   }
   return {Side::none, {}};
 }
@@ -84,6 +86,12 @@ octocap_bone_info_t bone_info(int b) {
 }
 
 std::string bone_name(int b) { return bone_info(b).name; }
+
+// A model without clavicles or feet still takes a pose: those bones then stay at rest relative to their parent.
+bool optional_bone(int b) {
+  return b == OCTOCAP_BONE_L_SHOULDER || b == OCTOCAP_BONE_R_SHOULDER || b == OCTOCAP_BONE_L_FOOT ||
+         b == OCTOCAP_BONE_R_FOOT;
+}
 
 }  // namespace
 
@@ -128,7 +136,7 @@ void apply_bone_map_file(const Character& c, const std::string& path, BoneMap& m
 std::string missing_bones(const BoneMap& map) {
   std::string out;
   for (int b = 0; b < OCTOCAP_BONE_COUNT; ++b)
-    if (map[b] < 0 && b != OCTOCAP_BONE_L_SHOULDER && b != OCTOCAP_BONE_R_SHOULDER)
+    if (map[b] < 0 && !optional_bone(b))
       out += (out.empty() ? "" : ", ") + bone_name(b);
   return out;
 }

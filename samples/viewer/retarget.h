@@ -13,7 +13,7 @@
 
 using BoneMap = std::array<int, OCTOCAP_BONE_COUNT>;  // model node per octocap bone, -1 when unmapped
 
-// Name heuristics. Every bone but the shoulders (clavicles) must be found for a usable map.
+// Name heuristics. Every bone but the shoulders (clavicles) and feet must be found for a usable map.
 BoneMap find_bone_map(const Character& c);
 // Overrides from a JSON object {"l_upper_arm": "mixamorig:LeftArm", ...} (octocap bone names). Throws
 // std::runtime_error naming the file, an unknown octocap bone or a node the model does not have.

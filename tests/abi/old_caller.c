@@ -162,6 +162,22 @@ int main(int argc, char** argv) {
     expect(octocap_session_get_bones(session, OCTOCAP_FRAME_UNITY, bones, OCTOCAP_BONE_COUNT, &n) == OCTOCAP_OK &&
                n == OCTOCAP_BONE_COUNT && bones[OCTOCAP_BONE_R_UPPER_ARM].valid,
            "bones");
+#if OLD_API >= 6
+    {
+      /* Frames (1.1): a buffer of the old header's joint and bone counts still takes them, whatever was appended. */
+      octocap_frame_t* frame = NULL;
+      octocap_joint_t skeleton[OCTOCAP_JOINT_COUNT];
+      uint32_t got = 0;
+      expect(octocap_session_get_frame(session, &frame) == OCTOCAP_OK, "frame");
+      expect(octocap_frame_get_joints(frame, 0, skeleton, OCTOCAP_JOINT_COUNT, &got) == OCTOCAP_OK &&
+                 got == OCTOCAP_JOINT_COUNT && skeleton[OCTOCAP_JOINT_ROOT].valid,
+             "frame joints in an old-sized buffer");
+      expect(octocap_frame_get_bones(frame, 0, OCTOCAP_FRAME_RIG, bones, OCTOCAP_BONE_COUNT, &got) == OCTOCAP_OK &&
+                 got == OCTOCAP_BONE_COUNT && bones[OCTOCAP_BONE_L_LOWER_LEG].valid,
+             "frame bones in an old-sized buffer");
+      octocap_frame_release(frame);
+    }
+#endif
   }
   printf("old caller (API %d): %u frames, %ld / %ld keypoints solved, %.1f mm from the ground truth\n", OLD_API,
          frames, solved, total, err_n ? 1000 * err_sum / err_n : -1.0);

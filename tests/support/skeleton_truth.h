@@ -1,4 +1,4 @@
-// Skeleton joints (the paper's 15) from a layout's true 3D keypoints, by the layout's own definition.
+// Skeleton joints from a layout's true 3D keypoints, by the layout's own definition (NaN where it has no source).
 #pragma once
 #include <vector>
 
@@ -12,6 +12,10 @@ inline octocap::SkeletonJoints skeleton_from_keypoints(const std::vector<Eigen::
   const octocap::KeypointLayout& l = octocap::layout(id);
   octocap::SkeletonJoints j;
   for (int i = 0; i < octocap::kJointCount; ++i) {
+    if (l.joint_sources[i].empty()) {
+      j[i] = Eigen::Vector3d::Constant(std::nan(""));
+      continue;
+    }
     const auto& alt = l.joint_sources[i].front();
     Eigen::Vector3d s = Eigen::Vector3d::Zero();
     for (int k : alt) s += kps[k];

@@ -2,6 +2,8 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <tuple>
+#include <utility>
 #include <limits>
 
 #include "io/bvh.h"
@@ -46,7 +48,7 @@ Calibration make_camera_ring(const RigOptions& o) {
 
 std::string default_bvh_path() { return "/usr/share/assimp/models/BVH/01_01.bvh"; }
 
-Motion load_cmu_motion(const std::string& path, size_t first, size_t count, size_t step) {
+Motion load_cmu_motion(const std::string& path, size_t first, size_t count, size_t step, bool toes_on_foot) {
   const BvhMotion bvh = read_bvh(path);
   auto idx = [&](const char* n) {
     const int i = bvh.find(n);
@@ -56,12 +58,24 @@ Motion load_cmu_motion(const std::string& path, size_t first, size_t count, size
   const int hips = idx("Hips"), head = idx("Head"), head_end = idx("Head_end");
   const int ls = idx("LeftArm"), le = idx("LeftForeArm"), lw = idx("LeftHand");
   const int rs = idx("RightArm"), re = idx("RightForeArm"), rw = idx("RightHand");
-  const int lh = idx("LeftUpLeg"), lk = idx("LeftLeg"), la = idx("LeftFoot"), lt = idx("LeftToeBase_end");
-  const int rh = idx("RightUpLeg"), rk = idx("RightLeg"), ra = idx("RightFoot"), rt = idx("RightToeBase_end");
+  const int lh = idx("LeftUpLeg"), lk = idx("LeftLeg"), la = idx("LeftFoot");
+  const int rh = idx("RightUpLeg"), rk = idx("RightLeg"), ra = idx("RightFoot");
+  const int lt = idx("LeftToeBase_end"), rt = idx("RightToeBase_end");
+  // Toes where the toe tip is at rest in the foot's own frame (toes_on_foot), else where the take's bent toe joint
+  // puts them (a few degrees, std 6-9 deg in 01_01).
+  auto toe_tip = [&](const char* toe) {
+    const int t = idx(toe), end = idx((std::string(toe) + "_end").c_str());
+    return Eigen::Vector3d((bvh.joints[t].offset + bvh.joints[end].offset) * kCmuUnit);
+  };
+  const Eigen::Vector3d l_toe = toe_tip("LeftToeBase"), r_toe = toe_tip("RightToeBase");
   Motion m;
   m.rate_hz = 1.0 / (bvh.frame_time * step);
   std::vector<Eigen::Vector3d> P;
   std::vector<Eigen::Matrix3d> R;
+  auto toes = [&](int foot, int tip, const Eigen::Vector3d& rest, const Eigen::Vector3d& small) {
+    const Eigen::Vector3d big = toes_on_foot ? Eigen::Vector3d(P[foot] + R[foot] * rest) : P[tip];
+    return std::pair<Eigen::Vector3d, Eigen::Vector3d>{big, big + R[foot] * small};
+  };
   // Face and foot points hang off the head and feet in the rest pose's frame (left +X, up +Y, forward +Z).
   const Eigen::Vector3d L = Eigen::Vector3d::UnitX(), U = Eigen::Vector3d::UnitY(), F = Eigen::Vector3d::UnitZ();
   for (size_t n = 0; n < count; ++n) {
@@ -84,11 +98,9 @@ Motion load_cmu_motion(const std::string& path, size_t first, size_t count, size
     k[16] = on_head(0.08 * F + 0.03 * U + 0.035 * L);         // LEye
     k[17] = on_head(-0.075 * L);                              // REar
     k[18] = on_head(0.075 * L);                               // LEar
-    k[19] = P[lt];                                            // LBigToe
-    k[20] = P[lt] + R[la] * (0.05 * L - 0.02 * F);            // LSmallToe
+    std::tie(k[19], k[20]) = toes(la, lt, l_toe, 0.05 * L - 0.02 * F);   // LBigToe, LSmallToe
     k[21] = on_foot(la, -0.06 * F - 0.06 * U);                // LHeel
-    k[22] = P[rt];                                            // RBigToe
-    k[23] = P[rt] + R[ra] * (-0.05 * L - 0.02 * F);           // RSmallToe
+    std::tie(k[22], k[23]) = toes(ra, rt, r_toe, -0.05 * L - 0.02 * F);  // RBigToe, RSmallToe
     k[24] = on_foot(ra, -0.06 * F - 0.06 * U);                // RHeel
     m.frames.push_back(std::move(k));
   }

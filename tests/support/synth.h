@@ -30,7 +30,8 @@ struct Motion {
 };
 std::string default_bvh_path();  // CMU subject 1, trial 1
 // Frames [first, first + count*step) of a CMU BVH, every `step`-th, as BODY_25 keypoints.
-Motion load_cmu_motion(const std::string& bvh_path, size_t first, size_t count, size_t step);
+// toes_on_foot: the toes rigid on the foot's frame (the foot's true rotation is then that of the BVH's foot joint).
+Motion load_cmu_motion(const std::string& bvh_path, size_t first, size_t count, size_t step, bool toes_on_foot = false);
 // BODY_25 keypoints -> another layout by keypoint name (NaN where the layout has a point BODY_25 lacks:
 // BODY_25B/HALPE "Head" is made from the ears and nose instead).
 std::vector<Eigen::Vector3d> to_layout(const std::vector<Eigen::Vector3d>& body25, LayoutId layout);

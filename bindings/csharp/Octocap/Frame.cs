@@ -49,7 +49,7 @@ namespace Octocap
             return (int)n;
         }
 
-        /// <summary>The 15 skeleton joints of <paramref name="person"/>; returns how many were written.</summary>
+        /// <summary>The skeleton joints (JointId) of <paramref name="person"/>; returns how many were written.</summary>
         public unsafe int GetJoints(int person, Span<Joint> output)
         {
             uint n;

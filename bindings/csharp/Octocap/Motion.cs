@@ -30,7 +30,7 @@ namespace Octocap
             return new Frame(f);
         }
 
-        /// <summary>The 15 joints of a frame, rig frame (Y up, metres); returns how many were written.</summary>
+        /// <summary>The skeleton joints (JointId) of a frame, rig frame (Y up, metres); returns how many were written.</summary>
         public unsafe int GetJoints(int frame, Span<Joint> output)
         {
             uint n;

@@ -45,18 +45,18 @@ namespace Octocap
     public enum DetectMode : int { PerView = 0, Mosaic = 1, Crop = 2 }
     public enum PersonPick : int { All = 0, Largest = 1, MostConfident = 2, NearestPrevious = 3 }
 
-    /// <summary>The paper's skeleton joints (octocap_joint_id_t).</summary>
+    /// <summary>The skeleton joints (octocap_joint_id_t): the paper's 14 and a root, then toes and heels (1.4).</summary>
     public enum JointId : int
     {
         Head = 0, Neck, RShoulder, RElbow, RHand, LShoulder, LElbow, LHand, RHip, RKnee, RFoot, LHip, LKnee, LFoot,
-        Root, Count
+        Root, RToe, LToe, RHeel, LHeel, Count
     }
 
     /// <summary>Rig bones (octocap_bone_id_t); parents come before children.</summary>
     public enum BoneId : int
     {
         Root = 0, Torso, Head, RShoulder, RUpperArm, RLowerArm, LShoulder, LUpperArm, LLowerArm, RUpperLeg,
-        RLowerLeg, LUpperLeg, LLowerLeg, Count
+        RLowerLeg, LUpperLeg, LLowerLeg, RFoot, LFoot, Count
     }
 
     [StructLayout(LayoutKind.Sequential)]

@@ -83,7 +83,7 @@ extern "C" {
 
 /** Version of this header. The library's own is octocap_version_number(). */
 #define OCTOCAP_VERSION_MAJOR 1
-#define OCTOCAP_VERSION_MINOR 3
+#define OCTOCAP_VERSION_MINOR 4
 #define OCTOCAP_VERSION_PATCH 0
 /** MAJOR * 10000 + MINOR * 100 + PATCH: 10000 for 1.0.0. */
 #define OCTOCAP_VERSION_NUMBER (OCTOCAP_VERSION_MAJOR * 10000 + OCTOCAP_VERSION_MINOR * 100 + OCTOCAP_VERSION_PATCH)
@@ -179,7 +179,11 @@ OCTOCAP_API octocap_result_t octocap_layout_from_name(const char* name, octocap_
 /** Static name of keypoint `index` of `layout` ("RShoulder"), or NULL when out of range. */
 OCTOCAP_API const char* octocap_layout_keypoint_name(octocap_layout_t layout, uint32_t index);
 
-/** The paper's skeleton: 14 joints plus a root at the hip centre. */
+/**
+ * The skeleton's joints: the paper's 14 plus a root at the hip centre, then (1.4) toes and heels. New joints are
+ * only ever appended, so an index keeps its meaning. A joint the layout has no keypoints for (the feet of COCO_17,
+ * MoveNet's layout) is never valid.
+ */
 typedef int32_t octocap_joint_id_t;
 /** Values of ::octocap_joint_id_t. */
 enum octocap_joint_id_values {
@@ -198,12 +202,20 @@ enum octocap_joint_id_values {
   OCTOCAP_JOINT_L_KNEE = 12,
   OCTOCAP_JOINT_L_FOOT = 13,
   OCTOCAP_JOINT_ROOT = 14,
-  OCTOCAP_JOINT_COUNT = 15
+  OCTOCAP_JOINT_R_TOE = 15,  /**< (1.4) Between big and small toe, else the big toe. */
+  OCTOCAP_JOINT_L_TOE = 16,  /**< (1.4) */
+  OCTOCAP_JOINT_R_HEEL = 17, /**< (1.4) */
+  OCTOCAP_JOINT_L_HEEL = 18, /**< (1.4) */
+  OCTOCAP_JOINT_COUNT = 19   /**< 15 before 1.4. */
 };
 
 /**
  * Bones of the rig. ROOT carries the global orientation of the pelvis; every other bone goes from a parent
- * joint to a child joint and rotates relative to its parent bone.
+ * joint to a child joint and rotates relative to its parent bone. Every rotation is whole, twist included: the
+ * upper arms and thighs roll with the plane of the bent elbow and knee (forearm and shin turn about their hinge),
+ * the torso with the shoulder line, the head with ears, eyes and nose, the feet with the heel. A roll that a frame
+ * cannot show (a straight limb, a face or heel not seen) holds its last value, easing back toward no roll of its
+ * own over a few seconds. New bones are only ever appended (1.4: the feet).
  */
 typedef int32_t octocap_bone_id_t;
 /** Values of ::octocap_bone_id_t. */
@@ -221,7 +233,10 @@ enum octocap_bone_id_values {
   OCTOCAP_BONE_R_LOWER_LEG = 10,
   OCTOCAP_BONE_L_UPPER_LEG = 11,
   OCTOCAP_BONE_L_LOWER_LEG = 12,
-  OCTOCAP_BONE_COUNT = 13
+  OCTOCAP_BONE_R_FOOT = 13, /**< (1.4) Ankle (OCTOCAP_JOINT_R_FOOT) to toes. Rest: forward (+Z) and 20 deg down,
+                                 as a foot standing flat, so that an avatar's foot at rest is near the template. */
+  OCTOCAP_BONE_L_FOOT = 14, /**< (1.4) */
+  OCTOCAP_BONE_COUNT = 15   /**< 13 before 1.4. */
 };
 
 /** Static name of a skeleton joint ("r_elbow") or NULL. */
@@ -376,10 +391,13 @@ OCTOCAP_API octocap_result_t octocap_frame_get_person(const octocap_frame_t* fra
  *  `capacity` is short, with the count set). */
 OCTOCAP_API octocap_result_t octocap_frame_get_keypoints3d(const octocap_frame_t* frame, uint32_t person,
                                                            octocap_joint_t* out, uint32_t capacity, uint32_t* count);
-/** The ::OCTOCAP_JOINT_COUNT skeleton joints of `person` (two-call pattern). */
+/** The ::OCTOCAP_JOINT_COUNT skeleton joints of `person` (two-call pattern). A caller built before joints were
+ *  appended (a capacity of at least 15, its OCTOCAP_JOINT_COUNT, but less than today's) gets the first `capacity`
+ *  joints, count set to that, and OCTOCAP_OK: new joints never break an old caller. */
 OCTOCAP_API octocap_result_t octocap_frame_get_joints(const octocap_frame_t* frame, uint32_t person,
                                                       octocap_joint_t* out, uint32_t capacity, uint32_t* count);
-/** The ::OCTOCAP_BONE_COUNT bone poses of `person`, converted to `coord_frame` (two-call pattern). Errors also:
+/** The ::OCTOCAP_BONE_COUNT bone poses of `person`, converted to `coord_frame` (two-call pattern; as for joints,
+ *  a capacity of at least 13, the count before 1.4, gets that many bones and OCTOCAP_OK). Errors also:
  *  INVALID_ARGUMENT for an unknown coordinate frame. */
 OCTOCAP_API octocap_result_t octocap_frame_get_bones(const octocap_frame_t* frame, uint32_t person,
                                                      octocap_coord_frame_t coord_frame, octocap_bone_pose_t* out,

@@ -16,6 +16,14 @@ octocap_quat_t quat_c(const Eigen::Quaterniond& q) {
   return {static_cast<float>(q.x()), static_cast<float>(q.y()), static_cast<float>(q.z()), static_cast<float>(q.w())};
 }
 
+// Joints and bones are only ever appended: a caller built with an older header's count (its capacity at least that
+// count) gets as many as it has room for, and OK. Below the oldest count the two-call pattern's BUFFER_TOO_SMALL holds.
+uint32_t appended_count(uint32_t now, uint32_t first_released, const void* out, uint32_t capacity) {
+  return out && capacity >= first_released && capacity < now ? capacity : now;
+}
+
+constexpr uint32_t kJointCount10 = 15, kBoneCount10 = 13;  // the counts of 1.0-1.3
+
 }  // namespace
 
 void check_person(const FrameResult& f, uint32_t person, bool allow_empty) {
@@ -85,16 +93,18 @@ void query_keypoints(const PersonResult& f, octocap_joint_t* out, uint32_t capac
 }
 
 void query_joints(const PersonResult& f, octocap_joint_t* out, uint32_t capacity, uint32_t* count) {
-  fill_array(kJointCount, out, capacity, count, [&] {
-    for (int j = 0; j < kJointCount; ++j) to_c_joint(f.joints[j], out[j]);
+  const uint32_t n = appended_count(kJointCount, kJointCount10, out, capacity);
+  fill_array(n, out, capacity, count, [&] {
+    for (uint32_t j = 0; j < n; ++j) to_c_joint(f.joints[j], out[j]);
   });
 }
 
 void query_bones(const PersonResult& f, octocap_coord_frame_t frame, octocap_bone_pose_t* out, uint32_t capacity,
                  uint32_t* count) {
   const CoordFrame cf = frame_of(frame);
-  fill_array(kBoneCount, out, capacity, count, [&] {
-    for (int b = 0; b < kBoneCount; ++b) {
+  const uint32_t n = appended_count(kBoneCount, kBoneCount10, out, capacity);
+  fill_array(n, out, capacity, count, [&] {
+    for (uint32_t b = 0; b < n; ++b) {
       const BonePose& p = f.bones[b];
       octocap_bone_pose_t& o = out[b];
       o = octocap_bone_pose_t{};

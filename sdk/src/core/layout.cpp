@@ -18,8 +18,21 @@ const std::vector<std::pair<int, int>> kCocoMirror = {{1, 2}, {3, 4}, {5, 6}, {7
                                                       {11, 12}, {13, 14}, {15, 16}};
 
 // The limbs are the same in every COCO-ordered layout; head, neck and root differ.
+// Feet, for layouts that have them: the toe joint between big and small toe (else the big toe alone), the heel.
+struct FeetKeypoints {
+  int r_big = -1, r_small = -1, r_heel = -1, l_big = -1, l_small = -1, l_heel = -1;
+};
+
+void add_feet(KeypointLayout& l, const FeetKeypoints& f) {
+  if (f.r_big < 0) return;
+  l.joint_sources[kRToe] = {{f.r_big, f.r_small}, {f.r_big}};
+  l.joint_sources[kLToe] = {{f.l_big, f.l_small}, {f.l_big}};
+  l.joint_sources[kRHeel] = {{f.r_heel}};
+  l.joint_sources[kLHeel] = {{f.l_heel}};
+}
+
 KeypointLayout coco_ordered(LayoutId id, const char* name, std::vector<const char*> names, Alt head, Alt neck,
-                            Alt root, std::vector<std::pair<int, int>> mirror) {
+                            Alt root, std::vector<std::pair<int, int>> mirror, FeetKeypoints feet = {}) {
   KeypointLayout l{id, name, std::move(names), {}, std::move(mirror)};
   l.joint_sources[kHead] = std::move(head);
   l.joint_sources[kNeck] = std::move(neck);
@@ -36,6 +49,7 @@ KeypointLayout coco_ordered(LayoutId id, const char* name, std::vector<const cha
   l.joint_sources[kLKnee] = {{13}};
   l.joint_sources[kLFoot] = {{15}};
   l.joint_sources[kRoot] = std::move(root);
+  add_feet(l, feet);
   return l;
 }
 
@@ -72,6 +86,7 @@ KeypointLayout make_body25() {
   l.joint_sources[kLKnee] = {{13}};
   l.joint_sources[kLFoot] = {{14}};
   l.joint_sources[kRoot] = {{9, 12}, {8}};
+  add_feet(l, {22, 23, 24, 19, 20, 21});
   return l;
 }
 
@@ -82,13 +97,13 @@ const std::vector<KeypointLayout>& table() {
                    concat(kCocoNames, {"Neck", "Head", "LBigToe", "LSmallToe", "LHeel", "RBigToe", "RSmallToe",
                                        "RHeel"}),
                    {{18}, {3, 4}, {0}}, {{17}, {5, 6}}, {{11, 12}},
-                   concat(kCocoMirror, {{19, 22}, {20, 23}, {21, 24}})),
+                   concat(kCocoMirror, {{19, 22}, {20, 23}, {21, 24}}), {22, 23, 24, 19, 20, 21}),
       coco_ordered(LayoutId::coco17, "COCO_17", kCocoNames, {{3, 4}, {0}}, {{5, 6}}, {{11, 12}}, kCocoMirror),
       coco_ordered(LayoutId::halpe26, "HALPE_26",
                    concat(kCocoNames, {"Head", "Neck", "Hip", "LBigToe", "RBigToe", "LSmallToe", "RSmallToe",
                                        "LHeel", "RHeel"}),
                    {{17}, {3, 4}, {0}}, {{18}, {5, 6}}, {{11, 12}, {19}},
-                   concat(kCocoMirror, {{20, 21}, {22, 23}, {24, 25}})),
+                   concat(kCocoMirror, {{20, 21}, {22, 23}, {24, 25}}), {21, 23, 25, 20, 22, 24}),
   };
   return layouts;
 }

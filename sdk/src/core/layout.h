@@ -1,4 +1,4 @@
-// Keypoint layouts as data tables: names, order, and how each maps onto the paper's 15-joint skeleton.
+// Keypoint layouts as data tables: names, order, and how each maps onto the skeleton (core/skeleton.h).
 #pragma once
 #include <array>
 #include <string>

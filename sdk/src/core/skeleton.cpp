@@ -1,6 +1,7 @@
 #include "core/frame.h"
 
 #include <atomic>
+#include <cmath>
 #include "core/skeleton.h"
 
 namespace octocap {
@@ -8,7 +9,8 @@ namespace octocap {
 const std::array<const char*, kJointCount>& joint_names() {
   static const std::array<const char*, kJointCount> names = {
       "head", "neck", "r_shoulder", "r_elbow", "r_hand", "l_shoulder", "l_elbow", "l_hand",
-      "r_hip", "r_knee", "r_foot", "l_hip", "l_knee", "l_foot", "root"};
+      "r_hip", "r_knee", "r_foot", "l_hip", "l_knee", "l_foot", "root",
+      "r_toe", "l_toe", "r_heel", "l_heel"};
   return names;
 }
 
@@ -28,19 +30,24 @@ const std::array<BoneDef, kBoneCount>& bone_table() {
       {"r_lower_leg", kBoneRUpperLeg, kRKnee, kRFoot},
       {"l_upper_leg", kBoneRoot, kLHip, kLKnee},
       {"l_lower_leg", kBoneLUpperLeg, kLKnee, kLFoot},
+      // The foot from the ankle (the joint the paper calls foot) to the toes; the heel gives its roll.
+      {"r_foot", kBoneRLowerLeg, kRFoot, kRToe},
+      {"l_foot", kBoneLLowerLeg, kLFoot, kLToe},
   }};
   return bones;
 }
 
 const std::array<Eigen::Vector3d, kBoneCount>& tpose_directions() {
+  static const Eigen::Vector3d kFootRest(0, -std::sin(20 * M_PI / 180), std::cos(20 * M_PI / 180));
   // The four template frame kinds of the paper: up (torso, head), left (+X), right (-X), down (legs);
-  // the root points at the left hip (+X).
+  // the root points at the left hip (+X); a foot forward (+Z) and 20 deg down, as it stands flat (toes 16 cm ahead
+  // of the ankle, 6 cm below it), so that a standing foot is near identity and so is an avatar's foot at rest.
   static const std::array<Eigen::Vector3d, kBoneCount> dirs = {
       Eigen::Vector3d(1, 0, 0),  Eigen::Vector3d(0, 1, 0),  Eigen::Vector3d(0, 1, 0),
       Eigen::Vector3d(-1, 0, 0), Eigen::Vector3d(-1, 0, 0), Eigen::Vector3d(-1, 0, 0),
       Eigen::Vector3d(1, 0, 0),  Eigen::Vector3d(1, 0, 0),  Eigen::Vector3d(1, 0, 0),
       Eigen::Vector3d(0, -1, 0), Eigen::Vector3d(0, -1, 0), Eigen::Vector3d(0, -1, 0),
-      Eigen::Vector3d(0, -1, 0)};
+      Eigen::Vector3d(0, -1, 0), kFootRest,                 kFootRest};
   return dirs;
 }
 

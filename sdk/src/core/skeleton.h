@@ -1,22 +1,24 @@
-// The paper's skeleton (14 joints + root), its bones and the T-pose template.
+// The skeleton: the paper's 14 joints + a root, then toes and heels (appended: indices never move), its bones and
+// the T-pose template.
 #pragma once
 #include <Eigen/Core>
 #include <array>
 
 namespace octocap {
 
-constexpr int kJointCount = 15;
-constexpr int kBoneCount = 13;
+constexpr int kJointCount = 19;
+constexpr int kBoneCount = 15;
 
 enum Joint : int {
   kHead = 0, kNeck, kRShoulder, kRElbow, kRHand, kLShoulder, kLElbow, kLHand,
-  kRHip, kRKnee, kRFoot, kLHip, kLKnee, kLFoot, kRoot
+  kRHip, kRKnee, kRFoot, kLHip, kLKnee, kLFoot, kRoot,
+  kRToe, kLToe, kRHeel, kLHeel  // feet, where the layout has them (BODY_25, BODY_25B, HALPE_26)
 };
 
 enum Bone : int {
   kBoneRoot = 0, kBoneTorso, kBoneHead, kBoneRShoulder, kBoneRUpperArm, kBoneRLowerArm,
   kBoneLShoulder, kBoneLUpperArm, kBoneLLowerArm, kBoneRUpperLeg, kBoneRLowerLeg,
-  kBoneLUpperLeg, kBoneLLowerLeg
+  kBoneLUpperLeg, kBoneLLowerLeg, kBoneRFoot, kBoneLFoot
 };
 
 struct BoneDef {

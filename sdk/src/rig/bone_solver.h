@@ -27,6 +27,7 @@ struct BodyCues {
 //   smallest rotation), so a straight limb never flips;
 // - the torso: from the shoulder line (the chest's twist against the hips);
 // - the head: from the ears or eyes, else the nose (yaw, pitch, roll), held the same way when the face is not seen;
+// - the feet (ankle to toes): from the plane of ankle, toes and heel, held the same way when the heel is not seen;
 // - every other bone (shoulders, forearms, shins): the smallest rotation that turns its template direction into its
 //   measured direction in its parent's frame, the paper's anti-spin correction in closed form (no roll of its own).
 // A bone whose joints or parent are missing is invalid (identity rotation) and so are its descendants.

@@ -120,6 +120,9 @@ SkeletonMotion from_bvh(const std::string& path) {
                      find_any({"RightUpLeg", "RightUpperLeg", "rThigh"}), find_any({"RightLeg", "RightLowerLeg", "rShin"}),
                      find_any({"RightFoot", "rFoot", "RightLeg_end"}), find_any({"LeftUpLeg", "LeftUpperLeg", "lThigh"}),
                      find_any({"LeftLeg", "LeftLowerLeg", "lShin"}), find_any({"LeftFoot", "lFoot", "LeftLeg_end"})};
+  // Toes are optional (a foot bone then has no target); files have no heel, so a foot's roll is the smallest one.
+  const int toes[2] = {find_any({"RightToeBase_end", "RightToeBase", "RightToe", "rToe"}),
+                       find_any({"LeftToeBase_end", "LeftToeBase", "LeftToe", "lToe"})};
   (void)root;  // required as proof of a humanoid hierarchy; the root joint is taken between the hips
   if (root < 0 || neck < 0 || (head < 0 && head_end < 0) || std::count(j, j + 12, -1) > 0)
     throw Error(Errc::parse, path + ": no humanoid skeleton found (expected CMU / Mixamo-style joint names: Hips, Neck, "
@@ -144,6 +147,9 @@ SkeletonMotion from_bvh(const std::string& path) {
     s[kHead] = (head >= 0 && head_end >= 0 ? 0.5 * (P[head] + P[head_end]) : P[head >= 0 ? head : head_end]) * unit;
     const int order[12] = {kRShoulder, kRElbow, kRHand, kLShoulder, kLElbow, kLHand, kRHip, kRKnee, kRFoot, kLHip, kLKnee, kLFoot};
     for (int i = 0; i < 12; ++i) s[order[i]] = P[j[i]] * unit;
+    s[kRToe] = toes[0] >= 0 ? Eigen::Vector3d(P[toes[0]] * unit) : Eigen::Vector3d::Constant(kNaN);
+    s[kLToe] = toes[1] >= 0 ? Eigen::Vector3d(P[toes[1]] * unit) : Eigen::Vector3d::Constant(kNaN);
+    s[kRHeel] = s[kLHeel] = Eigen::Vector3d::Constant(kNaN);
     m.frames.push_back(s);
   }
   return m;

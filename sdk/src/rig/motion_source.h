@@ -18,7 +18,7 @@ struct SkeletonMotion {
 // Throws Error(io / parse / invalid_argument) naming the file: unknown extension, no recognisable skeleton.
 SkeletonMotion load_skeleton_motion(const std::string& path);
 
-// The paper's 15 joints from one frame of layout keypoints (the layout's joint sources; NaN when absent).
+// The skeleton's joints from one frame of layout keypoints (the layout's joint sources; NaN when absent).
 SkeletonJoints joints_from_keypoints(const KeypointLayout& layout, const std::vector<Eigen::Vector3d>& keypoints);
 
 }  // namespace octocap

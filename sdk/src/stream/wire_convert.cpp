@@ -82,12 +82,17 @@ void fill_person(const PersonResult& person, PoseBuffers& buf) {
 bool read_person(const dds_sequence_octocap_wire_PointSample& keypoints,
                  const dds_sequence_octocap_wire_PointSample& joints, const dds_sequence_octocap_wire_BoneSample& bones,
                  size_t K, PersonResult& person, std::string& why) {
-  if (keypoints._length != K || joints._length != kJointCount || bones._length != kBoneCount) {
+  // Joints and bones are only ever appended to the skeleton: a writer of another version sends more or fewer than
+  // ours, from the 1.0 skeleton's 15 and 13 up. What both know is read; ours past the writer's stay invalid.
+  constexpr uint32_t kFirstJoints = 15, kFirstBones = 13;
+  if (keypoints._length != K || joints._length < kFirstJoints || bones._length < kFirstBones) {
     why = "sizes " + std::to_string(keypoints._length) + "/" + std::to_string(joints._length) + "/" +
           std::to_string(bones._length) + " do not match the skeleton definition (" + std::to_string(K) + "/" +
           std::to_string(kJointCount) + "/" + std::to_string(kBoneCount) + ")";
     return false;
   }
+  const int joint_count = std::min<int>(kJointCount, static_cast<int>(joints._length));
+  const int bone_count = std::min<int>(kBoneCount, static_cast<int>(bones._length));
   person.keypoints.resize(K);
   person.keypoints_solved = 0;
   for (size_t k = 0; k < K; ++k) {
@@ -97,12 +102,12 @@ bool read_person(const dds_sequence_octocap_wire_PointSample& keypoints,
     }
     person.keypoints_solved += person.keypoints[k].valid;
   }
-  for (int j = 0; j < kJointCount; ++j)
+  for (int j = 0; j < joint_count; ++j)
     if (!from_wire(joints._buffer[j], person.joints[j])) {
       why = "non-finite joint";
       return false;
     }
-  for (int b = 0; b < kBoneCount; ++b) {
+  for (int b = 0; b < bone_count; ++b) {
     const octocap_wire_BoneSample& s = bones._buffer[b];
     if (!finite(s.local_rotation, 4) || !finite(s.global_rotation, 4) || !finite(s.head_position, 3) ||
         !std::isfinite(s.length_m)) {

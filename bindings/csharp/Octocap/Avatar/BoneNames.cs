@@ -8,14 +8,16 @@ namespace Octocap.Avatar
         public static readonly string[] UnityHumanBodyBones =
         {
             "Hips", "Spine", "Neck", "RightShoulder", "RightUpperArm", "RightLowerArm", "LeftShoulder",
-            "LeftUpperArm", "LeftLowerArm", "RightUpperLeg", "RightLowerLeg", "LeftUpperLeg", "LeftLowerLeg"
+            "LeftUpperArm", "LeftLowerArm", "RightUpperLeg", "RightLowerLeg", "LeftUpperLeg", "LeftLowerLeg",
+            "RightFoot", "LeftFoot"
         };
 
         /// <summary>Godot 4's SkeletonProfileHumanoid bone names (what retargeted humanoids use), by <see cref="BoneId"/>.</summary>
         public static readonly string[] GodotHumanoid =
         {
             "Hips", "Spine", "Neck", "RightShoulder", "RightUpperArm", "RightLowerArm", "LeftShoulder",
-            "LeftUpperArm", "LeftLowerArm", "RightUpperLeg", "RightLowerLeg", "LeftUpperLeg", "LeftLowerLeg"
+            "LeftUpperArm", "LeftLowerArm", "RightUpperLeg", "RightLowerLeg", "LeftUpperLeg", "LeftLowerLeg",
+            "RightFoot", "LeftFoot"
         };
     }
 }
