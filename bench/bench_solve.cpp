@@ -10,7 +10,9 @@
 #include <vector>
 
 #include "octocap/octocap.h"
+#include "rig/bone_solver.h"
 #include "solve/subdivision.h"
+#include "skeleton_truth.h"
 #include "synth.h"
 
 using namespace octocap;
@@ -214,11 +216,30 @@ void frame_queries(octocap_calibration_t* calib, const Frames& frames) {
     octocap_session_get_keypoints3d(s, joints, 25, &n);
     octocap_session_get_bones(s, OCTOCAP_FRAME_UNITY, bones, OCTOCAP_BONE_COUNT, &n);
   });
-  std::printf("\nReading one solved frame (BODY_25, 13 bones in Unity's frame), us per frame:\n"
+  std::printf("\nReading one solved frame (BODY_25, every bone in Unity's frame), us per frame:\n"
               "  frame handle (get, summary, keypoints, bones, release): %.2f us\n"
               "  0.x queries on the session (info, keypoints, bones):    %.2f us\n",
               framed, in_place);
   octocap_session_destroy(s);
+}
+
+// The rig stage alone (stage 4: joints -> bone rotations with their rolls), per person and frame: with feet (BODY_25's
+// toes and heels: 15 bones) and without (COCO_17: 13 bones, the feet invalid), to set beside the 3D stage's ms.
+void rig_stage(const synth::Motion& motion) {
+  std::printf("\nRig stage (joints -> %d bone rotations, hinge/torso/face/foot rolls), us per person-frame:\n", kBoneCount);
+  for (LayoutId lid : {LayoutId::body25, LayoutId::coco17}) {
+    std::vector<SkeletonJoints> joints;
+    for (const auto& f : motion.frames) joints.push_back(testing::skeleton_from_keypoints(synth::to_layout(f, lid), lid));
+    BoneSolver solver;
+    double sink = 0;
+    const int rounds = 50;
+    const auto t0 = Clock::now();
+    for (int r = 0; r < rounds; ++r)
+      for (const auto& j : joints) sink += solver.solve(j)[kBoneRoot].length;
+    const double us = std::chrono::duration<double, std::micro>(Clock::now() - t0).count() / (rounds * joints.size());
+    std::printf("  %-8s (%s): %.2f us%s\n", layout(lid).name, lid == LayoutId::coco17 ? "no feet" : "feet", us,
+                sink > 0 ? "" : " ");
+  }
 }
 
 int main(int argc, char** argv) {
@@ -259,6 +280,7 @@ int main(int argc, char** argv) {
     octocap_calibration_destroy(calib);
   }
   hull_vs_ray();
+  rig_stage(motion);
   end_to_end(OCTOCAP_SOURCE_DIR "/data/sample");
   return 0;
 }

@@ -185,10 +185,10 @@ TEST_CASE("a foot flexes, points and rolls with its toes and heel; held while th
       const SkeletonPose pose = BoneSolver{}.solve(j);
       REQUIRE(pose[kBoneRFoot].valid);
       worst = std::max(worst, angle_between(pose[kBoneRFoot].local, truth));
-      solver.solve(j);
+      for (int i = 0; i < 30; ++i) solver.solve(j);  // held a moment: the smoothed roll settles
     }
   INFO("worst foot error " << worst * 180 / M_PI << " deg");
-  CHECK(worst < 1e-9);
+  CHECK(worst < 1e-9);  // a first frame takes its roll whole: there is nothing yet to smooth it against
   // The last pose (45 deg pointed, rolled 15 deg) held with the heel gone: the roll stays, easing back slowly.
   SkeletonJoints no_heel = rest;
   const Eigen::Quaterniond last(Eigen::AngleAxisd(45 * M_PI / 180, Eigen::Vector3d::UnitX()) *

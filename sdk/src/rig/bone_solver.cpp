@@ -53,19 +53,34 @@ struct RollRule {
   Roll kind = Roll::none;
   int far_joint = -1;          // hinge: the end of the limb's second bone (hand, ankle); foot: the heel
   Eigen::Vector3d side_rest;   // the template's side direction: hinge axis, or left (+X)
-  bool smoothed = false;       // the cue is noisy for its size: follow it adaptively (see follow())
+  bool smoothed = false;       // the cue is noisy for its size: follow it part of the way each frame (follow())
+  double max_roll = M_PI;      // the largest roll about the bone's own axis away from the smallest rotation
 };
 
 // How far toward its cue a bone moves this frame. Most cues are followed at once: smoothing them lags behind real
 // motion more than it removes noise (tests/test_rig_rotations.cpp, arms: 1.5-2.7 deg median at once, 2.0-2.9 even with
-// an adaptive filter). A foot's roll comes from a heel 6-9 cm off the ankle, where 2 mm of noise is a degree or two,
-// and feet seldom roll fast: there a small change is followed a fifth of the way each frame, a change of
-// kFollowFull or more at once (CMU motion, feet: 2.1-2.2 deg median, 4.9 at the 90th percentile, to 1.7-1.8 / 3.9-4.2).
-constexpr double kFollowLeast = 0.2, kFollowFull = 10 * kDegree;
+// an adaptive filter). A foot's roll comes from a heel 6-9 cm off the ankle, where a centimetre of detection noise is
+// many degrees, and feet seldom roll fast: there the roll moves a quarter of the way each frame. Measured (90th
+// percentile of the frame-to-frame turn of the right foot on the real take; CMU feet against the truth, median / 90th):
+// at once 26 deg, CMU 2.1-2.3 / 4.9; a quarter 19 deg, CMU 1.7-1.8 / 3.9-4.6; an adaptive filter (small changes a fifth,
+// 10 deg at once) 26 deg: the noise's jumps are large too. Per frame, so it is a little slower at higher frame rates.
+constexpr double kFootFollow = 0.25;
+constexpr double kFootRollRange = 35 * kDegree;
+// A heel this close to the ankle (as a fraction of the foot's length) gives no roll to trust; fully from the second.
+// Feet are 2.5-3 times as long as heel to ankle; on the real take some heels were found 2 cm from the ankle.
+constexpr double kHeelFrom = 0.15, kHeelFull = 0.35;
 
-double follow(const RollRule& rule, double change) {
-  return rule.smoothed ? std::clamp(change / kFollowFull, kFollowLeast, 1.0) : 1.0;
+// `target` (a local rotation with the same direction as `smallest`) with its roll about the bone's axis clamped to the
+// rule's range.
+Eigen::Quaterniond within_range(const RollRule& rule, const Eigen::Vector3d& axis, const Eigen::Quaterniond& smallest,
+                                const Eigen::Quaterniond& target) {
+  if (rule.max_roll >= M_PI) return target;
+  const double roll = twist_angle(smallest.conjugate() * target, axis);
+  if (std::abs(roll) <= rule.max_roll) return target;
+  return (smallest * Eigen::AngleAxisd(std::copysign(rule.max_roll, roll), axis)).normalized();
 }
+
+double follow(const RollRule& rule) { return rule.smoothed ? kFootFollow : 1.0; }
 
 const std::array<RollRule, kBoneCount>& roll_rules() {
   // Elbows flex toward the front (+Z): about +Y for the right arm (template direction -X), -Y for the left (+X);
@@ -80,8 +95,10 @@ const std::array<RollRule, kBoneCount>& roll_rules() {
     r[kBoneLUpperLeg] = {Roll::hinge, kLFoot, Eigen::Vector3d::UnitX()};
     // A foot (template forward, +Z) spans a plane with its heel (below the ankle): the plane's normal, toe direction
     // x heel direction, is +X in the template for both feet.
-    r[kBoneRFoot] = {Roll::foot, kRHeel, Eigen::Vector3d::UnitX(), true};
-    r[kBoneLFoot] = {Roll::foot, kLHeel, Eigen::Vector3d::UnitX(), true};
+    // A foot's own roll (inversion, eversion) goes a little past 30 deg: a heel that says more is a wrong detection
+    // (on the real take, heels 2 cm from the ankle flipped the foot over).
+    r[kBoneRFoot] = {Roll::foot, kRHeel, Eigen::Vector3d::UnitX(), true, kFootRollRange};
+    r[kBoneLFoot] = {Roll::foot, kLHeel, Eigen::Vector3d::UnitX(), true, kFootRollRange};
     return r;
   }();
   return rules;
@@ -112,7 +129,7 @@ std::optional<Eigen::Quaterniond> roll_cue(int b, const SkeletonJoints& j, const
       const Eigen::Vector3d heel = j[rule.far_joint] - j[def.head];
       q = aim(rest, rule.side_rest, d, d.cross(heel), sine);
       const double heel_sine = d.cross(heel).norm() / (d.norm() * heel.norm());
-      weight = smoothstep(kCueFrom, kCueFull, heel_sine);
+      weight = smoothstep(kCueFrom, kCueFull, heel_sine) * smoothstep(kHeelFrom, kHeelFull, heel.norm() / d.norm());
       break;
     }
     case Roll::shoulders:
@@ -172,6 +189,7 @@ SkeletonPose BoneSolver::solve(const SkeletonJoints& j, const BodyCues& cues) {
     if (!(len >= 1e-6) || !std::isfinite(len)) continue;
     const Eigen::Vector3d in_parent = parent.global.conjugate() * (d / len);
     Eigen::Quaterniond local = Eigen::Quaterniond::FromTwoVectors(rest[b], in_parent).normalized();
+    const Eigen::Quaterniond smallest = local;
     if (!local.coeffs().allFinite()) continue;
     if (roll_rules()[b].kind != Roll::none) {
       // Held: last frame's roll carried onto today's direction (in the parent's frame, so that a body turning round
@@ -180,16 +198,17 @@ SkeletonPose BoneSolver::solve(const SkeletonJoints& j, const BodyCues& cues) {
       if (previous_[b]) {
         const Eigen::Quaterniond carried =
             (Eigen::Quaterniond::FromTwoVectors(*previous_[b] * rest[b], in_parent) * *previous_[b]).normalized();
-        if (carried.coeffs().allFinite()) held = carried.slerp(kHoldDecay, local);
+        if (carried.coeffs().allFinite()) held = carried;
       }
       double weight = 0;
       const std::optional<Eigen::Quaterniond> cue = roll_cue(b, j, cues, d, weight);
-      if (cue && weight > 0) {
-        const Eigen::Quaterniond target = parent.global.conjugate() * *cue;
-        local = held.slerp(weight * follow(roll_rules()[b], held.angularDistance(target)), target).normalized();
-      } else {
-        local = held;
+      if (!cue) weight = 0;
+      if (weight > 0) {
+        const Eigen::Quaterniond target = within_range(roll_rules()[b], rest[b], smallest, parent.global.conjugate() * *cue);
+        held = held.slerp(weight * (previous_[b] ? follow(roll_rules()[b]) : 1.0), target).normalized();
       }
+      // What the cue does not say drifts slowly toward the smallest rotation (a cue seen in full stops the drift).
+      local = held.slerp(kHoldDecay * (1 - weight), smallest).normalized();
       previous_[b] = local;
     }
     bone.local = local;
