@@ -22,8 +22,6 @@ uint32_t appended_count(uint32_t now, uint32_t first_released, const void* out, 
   return out && capacity >= first_released && capacity < now ? capacity : now;
 }
 
-constexpr uint32_t kJointCount10 = 15, kBoneCount10 = 13;  // the counts of 1.0-1.3
-
 }  // namespace
 
 void check_person(const FrameResult& f, uint32_t person, bool allow_empty) {
@@ -93,7 +91,7 @@ void query_keypoints(const PersonResult& f, octocap_joint_t* out, uint32_t capac
 }
 
 void query_joints(const PersonResult& f, octocap_joint_t* out, uint32_t capacity, uint32_t* count) {
-  const uint32_t n = appended_count(kJointCount, kJointCount10, out, capacity);
+  const uint32_t n = appended_count(kJointCount, kFirstJointCount, out, capacity);
   fill_array(n, out, capacity, count, [&] {
     for (uint32_t j = 0; j < n; ++j) to_c_joint(f.joints[j], out[j]);
   });
@@ -102,7 +100,7 @@ void query_joints(const PersonResult& f, octocap_joint_t* out, uint32_t capacity
 void query_bones(const PersonResult& f, octocap_coord_frame_t frame, octocap_bone_pose_t* out, uint32_t capacity,
                  uint32_t* count) {
   const CoordFrame cf = frame_of(frame);
-  const uint32_t n = appended_count(kBoneCount, kBoneCount10, out, capacity);
+  const uint32_t n = appended_count(kBoneCount, kFirstBoneCount, out, capacity);
   fill_array(n, out, capacity, count, [&] {
     for (uint32_t b = 0; b < n; ++b) {
       const BonePose& p = f.bones[b];

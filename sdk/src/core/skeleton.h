@@ -8,6 +8,9 @@ namespace octocap {
 
 constexpr int kJointCount = 19;
 constexpr int kBoneCount = 15;
+// The 1.0 skeleton's counts: joints and bones are only ever appended, so every consumer knows at least these.
+constexpr int kFirstJointCount = 15;
+constexpr int kFirstBoneCount = 13;
 
 enum Joint : int {
   kHead = 0, kNeck, kRShoulder, kRElbow, kRHand, kLShoulder, kLElbow, kLHand,

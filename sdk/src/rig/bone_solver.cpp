@@ -127,8 +127,9 @@ std::optional<Eigen::Quaterniond> roll_cue(int b, const SkeletonJoints& j, const
     case Roll::foot: {
       if (!finite(j[rule.far_joint])) return std::nullopt;
       const Eigen::Vector3d heel = j[rule.far_joint] - j[def.head];
-      q = aim(rest, rule.side_rest, d, d.cross(heel), sine);
-      const double heel_sine = d.cross(heel).norm() / (d.norm() * heel.norm());
+      const Eigen::Vector3d side = d.cross(heel);
+      q = aim(rest, rule.side_rest, d, side, sine);
+      const double heel_sine = side.norm() / (d.norm() * heel.norm());
       weight = smoothstep(kCueFrom, kCueFull, heel_sine) * smoothstep(kHeelFrom, kHeelFull, heel.norm() / d.norm());
       break;
     }
@@ -202,8 +203,7 @@ SkeletonPose BoneSolver::solve(const SkeletonJoints& j, const BodyCues& cues) {
       }
       double weight = 0;
       const std::optional<Eigen::Quaterniond> cue = roll_cue(b, j, cues, d, weight);
-      if (!cue) weight = 0;
-      if (weight > 0) {
+      if (cue && weight > 0) {  // roll_cue gives weight 0 without a cue
         const Eigen::Quaterniond target = within_range(roll_rules()[b], rest[b], smallest, parent.global.conjugate() * *cue);
         held = held.slerp(weight * (previous_[b] ? follow(roll_rules()[b]) : 1.0), target).normalized();
       }

@@ -84,8 +84,8 @@ bool read_person(const dds_sequence_octocap_wire_PointSample& keypoints,
                  size_t K, PersonResult& person, std::string& why) {
   // Joints and bones are only ever appended to the skeleton: a writer of another version sends more or fewer than
   // ours, from the 1.0 skeleton's 15 and 13 up. What both know is read; ours past the writer's stay invalid.
-  constexpr uint32_t kFirstJoints = 15, kFirstBones = 13;
-  if (keypoints._length != K || joints._length < kFirstJoints || bones._length < kFirstBones) {
+  if (keypoints._length != K || joints._length < static_cast<uint32_t>(kFirstJointCount) ||
+      bones._length < static_cast<uint32_t>(kFirstBoneCount)) {
     why = "sizes " + std::to_string(keypoints._length) + "/" + std::to_string(joints._length) + "/" +
           std::to_string(bones._length) + " do not match the skeleton definition (" + std::to_string(K) + "/" +
           std::to_string(kJointCount) + "/" + std::to_string(kBoneCount) + ")";
