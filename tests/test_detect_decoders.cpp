@@ -166,3 +166,32 @@ TEST_CASE("person picking: largest, most confident, nearest to last frame, or al
   CHECK(all[0].score == Approx(0.9));
   CHECK(all[1].score == Approx(0.5));
 }
+
+TEST_CASE("BlazePose landmarks become pixel-centred keypoints with their visibility as confidence") {
+  const size_t K = 33;
+  Tensor landmarks{{1, 195}, std::vector<float>(195)};
+  for (size_t k = 0; k < 39; ++k) {
+    landmarks.data[k * 5 + 0] = 10.0f + static_cast<float>(k);  // x, input pixels
+    landmarks.data[k * 5 + 1] = 200.0f - static_cast<float>(k);  // y
+    landmarks.data[k * 5 + 2] = -3;                              // depth: not used
+    landmarks.data[k * 5 + 3] = k % 2 ? 2.0f : -2.0f;            // visibility logit
+    landmarks.data[k * 5 + 4] = 5;                               // presence logit
+  }
+  landmarks.data[7 * 5] = NAN;
+  const Tensor flag{{1, 1}, {0.9f}};
+  const auto people = decode_blazepose(landmarks, flag, K, 0.5);
+  REQUIRE(people.size() == 1);
+  CHECK(people[0].score == Approx(0.9));
+  REQUIRE(people[0].keypoints.size() == K);
+  for (size_t k = 0; k < K; ++k) {
+    if (k == 7) continue;
+    CHECK(people[0].keypoints[k].x == Approx(10.0 + k - 0.5));
+    CHECK(people[0].keypoints[k].y == Approx(200.0 - k - 0.5));
+    CHECK(people[0].keypoints[k].confidence == Approx(1 / (1 + std::exp(k % 2 ? -2.0 : 2.0))));
+  }
+  CHECK(people[0].keypoints[7].confidence == 0);  // a NaN landmark is no keypoint
+  // The person flag below the card's threshold: nobody there (the crop lost them).
+  CHECK(decode_blazepose(landmarks, Tensor{{1, 1}, {0.2f}}, K, 0.5).empty());
+  CHECK_THROWS_AS(decode_blazepose(Tensor{{1, 117}, std::vector<float>(117)}, flag, K, 0.5), Error);
+  CHECK_THROWS_AS(decode_blazepose(landmarks, Tensor{{1, 2}, {0.5f, 0.5f}}, K, 0.5), Error);
+}

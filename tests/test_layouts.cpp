@@ -45,6 +45,12 @@ TEST_CASE("layouts have the published keypoint orders", "[layout]") {
   REQUIRE(std::string(octocap_layout_keypoint_name(OCTOCAP_LAYOUT_COCO_17, 5)) == "LShoulder");
   REQUIRE(std::string(octocap_layout_keypoint_name(OCTOCAP_LAYOUT_HALPE_26, 19)) == "Hip");
   REQUIRE(octocap_layout_keypoint_count(OCTOCAP_LAYOUT_COCO_17) == 17);
+  // MediaPipe's landmark order (pose_landmark: 0 nose ... 29/30 heels, 31/32 foot index).
+  REQUIRE(octocap_layout_keypoint_count(OCTOCAP_LAYOUT_BLAZEPOSE_33) == 33);
+  REQUIRE(std::string(octocap_layout_keypoint_name(OCTOCAP_LAYOUT_BLAZEPOSE_33, 11)) == "LShoulder");
+  REQUIRE(std::string(octocap_layout_keypoint_name(OCTOCAP_LAYOUT_BLAZEPOSE_33, 22)) == "RThumb");
+  REQUIRE(std::string(octocap_layout_keypoint_name(OCTOCAP_LAYOUT_BLAZEPOSE_33, 29)) == "LHeel");
+  REQUIRE(std::string(octocap_layout_keypoint_name(OCTOCAP_LAYOUT_BLAZEPOSE_33, 32)) == "RFootIndex");
   REQUIRE(octocap_layout_keypoint_count(OCTOCAP_LAYOUT_AUTO) == 0);
   REQUIRE(octocap_layout_keypoint_name(OCTOCAP_LAYOUT_COCO_17, 17) == nullptr);
 }
@@ -58,5 +64,6 @@ TEST_CASE("layout names parse loosely and unknown names are refused", "[layout]"
   REQUIRE(octocap_layout_from_name("MPII", &l) == OCTOCAP_ERROR_INVALID_ARGUMENT);
   REQUIRE(std::string(octocap_last_error()).find("MPII") != std::string::npos);
   REQUIRE(layout_for_count(25) == LayoutId::body25);
+  REQUIRE(layout_for_count(33) == LayoutId::blazepose33);
   REQUIRE_THROWS_AS(layout_for_count(18), Error);
 }

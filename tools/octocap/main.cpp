@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
   sc->add_option("--sigma", solve.sigma, "Views a cube must be supported by (0: cameras - 1)")->capture_default_str();
   sc->add_option("--delta-mm", solve.delta_mm, "Smallest cube edge, mm")->check(CLI::PositiveNumber)->capture_default_str();
   sc->add_option("--filter", solve.filter, "Temporal filter")->check(CLI::IsMember({"none", "oneeuro"}))->capture_default_str();
-  sc->add_option("--layout", solve.layout, "Keypoint layout: auto, BODY_25, BODY_25B, COCO_17, HALPE_26")->capture_default_str();
+  sc->add_option("--layout", solve.layout, "Keypoint layout: auto, BODY_25, BODY_25B, COCO_17, HALPE_26, BLAZEPOSE_33")->capture_default_str();
   sc->add_option("--up", solve.up, "World up axis of the calibration")->check(CLI::IsMember({"auto", "y", "z"}))->capture_default_str();
   sc->add_option("--rate", solve.rate_hz, "Frame rate of the recording, Hz")->check(CLI::PositiveNumber)->capture_default_str();
   sc->add_option("--threads", solve.threads, "Worker threads (0: all cores)")->capture_default_str();

@@ -83,7 +83,7 @@ int solve(const SolveOptions& o) {
     source = std::make_unique<ImageSource>(o.images);
     views = static_cast<uint32_t>(source->camera_count());
     frames = static_cast<uint32_t>(source->frame_count());
-    if (layout == OCTOCAP_LAYOUT_AUTO) layout = OCTOCAP_LAYOUT_COCO_17;  // the shipped models' layout
+    if (layout == OCTOCAP_LAYOUT_AUTO) layout = octocap::Detector(o.detector.config()).info().layout;  // the model's
   } else {
     rec.emplace(o.keypoints, layout);
     if (!o.sync.empty()) {
@@ -297,7 +297,7 @@ int run_solve(const SolveOptions& options) { return run_reporting_errors("solve"
 
 int run_layouts() {
   for (octocap_layout_t l : {OCTOCAP_LAYOUT_BODY_25, OCTOCAP_LAYOUT_BODY_25B, OCTOCAP_LAYOUT_COCO_17,
-                             OCTOCAP_LAYOUT_HALPE_26}) {
+                             OCTOCAP_LAYOUT_HALPE_26, OCTOCAP_LAYOUT_BLAZEPOSE_33}) {
     std::printf("%s (%u keypoints):", octocap_layout_name(l), octocap_layout_keypoint_count(l));
     for (uint32_t k = 0; k < octocap_layout_keypoint_count(l); ++k) std::printf(" %s", octocap_layout_keypoint_name(l, k));
     std::printf("\n");

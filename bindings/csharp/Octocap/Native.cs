@@ -35,7 +35,7 @@ namespace Octocap
     }
 
     public enum LogLevel : int { Debug = 0, Info = 1, Warning = 2, Error = 3 }
-    public enum Layout : int { Auto = 0, Body25 = 1, Body25B = 2, Coco17 = 3, Halpe26 = 4 }
+    public enum Layout : int { Auto = 0, Body25 = 1, Body25B = 2, Coco17 = 3, Halpe26 = 4, BlazePose33 = 5 }
     public enum Method : int { Subdivision = 0, Triangulation = 1, Auto = 2 }
     public enum Filter : int { None = 0, OneEuro = 1 }
     public enum UpAxis : int { Y = 0, Z = 1, Auto = 2 }
@@ -384,6 +384,8 @@ namespace Octocap
         public Name32 Name;
         /// <summary>1.1. Remote cameras: transit plus how far the node's clock lags this host's (ms).</summary>
         public float ClockOffsetMs;
+        /// <summary>1.4. 1: capture times from the stream's own timestamps; 0: from when the host grabbed each picture.</summary>
+        public uint StreamClock;
     }
 
     [UnmanagedFunctionPointer(CallingConvention.Cdecl)]

@@ -106,6 +106,7 @@ static void layout(void) {
   FIELD(octocap_camera_status_t, reconnects); FIELD(octocap_camera_status_t, fps);
   FIELD(octocap_camera_status_t, nominal_fps); FIELD(octocap_camera_status_t, name);
   FIELD(octocap_camera_status_t, clock_offset_ms);
+  FIELD(octocap_camera_status_t, stream_clock);
 }
 
 static int fail(const char* what) {

@@ -167,7 +167,8 @@ enum octocap_layout_values {
   OCTOCAP_LAYOUT_BODY_25 = 1,   /**< OpenPose BODY_25. */
   OCTOCAP_LAYOUT_BODY_25B = 2,  /**< OpenPose experimental BODY_25B (Pose2Sim's demo): COCO order + neck, head, feet. */
   OCTOCAP_LAYOUT_COCO_17 = 3,   /**< COCO-17 (MoveNet, RTMPose, YOLO-pose). */
-  OCTOCAP_LAYOUT_HALPE_26 = 4   /**< HALPE-26 (AlphaPose, RTMPose body7 halpe26). */
+  OCTOCAP_LAYOUT_HALPE_26 = 4,  /**< HALPE-26 (AlphaPose, RTMPose body7 halpe26). */
+  OCTOCAP_LAYOUT_BLAZEPOSE_33 = 5 /**< (1.4) MediaPipe BlazePose: face, COCO limbs, hand points, heels, foot tips. */
 };
 
 /** Number of keypoints of a layout (0 for an unknown or AUTO layout). */
@@ -830,6 +831,12 @@ typedef struct octocap_camera_status_t {
                                       the node's clock lags this host's. Frame sets are matched on capture times
                                       corrected by it. Tens of ms or more, or negative: the clocks disagree (NTP/PTP).
                                       0 for local cameras. */
+  /* 1.4 */
+  uint32_t stream_clock;         /**< 1: this camera's capture times come from its stream's own timestamps (RTP for
+                                      RTSP), trusted once the stream and host clocks held steady for two seconds; 0:
+                                      from when the host grabbed each picture (files, sources without timestamps, a
+                                      stream's first seconds and after a reconnect), late by however long decoding
+                                      took on a busy host, so a set may pair pictures of different instants. */
 } octocap_camera_status_t;
 
 /**

@@ -35,6 +35,7 @@ void fill_camera_status(const FeedStatus& s, const std::string& name, octocap_ca
     o.nominal_fps = static_cast<float>(s.nominal_fps);
     copy_name(o.name, sizeof o.name, name);
     o.clock_offset_ms = static_cast<float>(s.clock_offset_ms);
+    o.stream_clock = s.stream_clock ? 1 : 0;
   });
 }
 

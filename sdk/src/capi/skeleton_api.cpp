@@ -34,7 +34,7 @@ octocap_result_t octocap_layout_from_name(const char* name, octocap_layout_t* ou
     LayoutId id;
     if (!layout_from_name(name, &id))
       throw Error(Errc::invalid_argument,
-                  std::string("unknown keypoint layout '") + name + "' (known: BODY_25, BODY_25B, COCO_17, HALPE_26)");
+                  std::string("unknown keypoint layout '") + name + "' (known: BODY_25, BODY_25B, COCO_17, HALPE_26, BLAZEPOSE_33)");
     *out = static_cast<octocap_layout_t>(id);
   });
 }

@@ -101,6 +101,7 @@ void CameraFeed::run() {
     frame.height = image.rows;
     frame.image = std::move(image);
     frame.grab_us = spec_.live() ? clock.capture_us(monotonic_us(), stream_us) : monotonic_us();
+    frame.stream_clock = spec_.live() && clock.trusted();
     frame.stream_us = stream_us;
     deliver(std::move(frame));
   }

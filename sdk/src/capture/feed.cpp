@@ -79,6 +79,7 @@ void Feed::deliver(CapturedFrame frame) {
     slots_[0].frame = std::move(frame);
     slots_[0].used = false;
     ++status_.grabbed;
+    status_.stream_clock = slots_[0].frame.stream_clock;
     if (last_delivery_us_ > 0 && now > last_delivery_us_) {
       // Smoothed on the interval, not on its inverse: a burst of catch-up reads must not read as a faster camera.
       const double dt = static_cast<double>(now - last_delivery_us_);

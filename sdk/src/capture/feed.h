@@ -26,6 +26,7 @@ struct CapturedFrame {
   int width = 0, height = 0;     // the picture's size
   int64_t grab_us = 0;           // when it was captured, host monotonic clock (µs)
   int64_t stream_us = 0;         // the stream's own timestamp (µs from its first frame)
+  bool stream_clock = false;     // grab_us comes from the stream's timestamps (capture/stream_clock.h), not the host's
   int64_t arrival_us = 0;        // when it reached the mailbox (monotonic; set by Feed::deliver)
   uint64_t sequence = 0;         // 1, 2, ... per feed
 };

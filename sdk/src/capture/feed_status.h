@@ -21,6 +21,9 @@ struct FeedStatus {
   // of the last few hundred: network transit plus how far the node's clock is behind this host's. Frame sets are
   // matched on capture times corrected by it. 0 for local cameras.
   double clock_offset_ms = 0;
+  // Live cameras: the last picture's capture time came from the stream's own clock (trusted once steady), not from
+  // when the host grabbed it.
+  bool stream_clock = false;
   std::string last_error;
 };
 

@@ -25,8 +25,9 @@ struct FeetKeypoints {
 
 void add_feet(KeypointLayout& l, const FeetKeypoints& f) {
   if (f.r_big < 0) return;
-  l.joint_sources[kRToe] = {{f.r_big, f.r_small}, {f.r_big}};
-  l.joint_sources[kLToe] = {{f.l_big, f.l_small}, {f.l_big}};
+  // A layout with one toe keypoint (BlazePose's foot index) has no pair to average.
+  l.joint_sources[kRToe] = f.r_small < 0 ? Alt{{f.r_big}} : Alt{{f.r_big, f.r_small}, {f.r_big}};
+  l.joint_sources[kLToe] = f.l_small < 0 ? Alt{{f.l_big}} : Alt{{f.l_big, f.l_small}, {f.l_big}};
   l.joint_sources[kRHeel] = {{f.r_heel}};
   l.joint_sources[kLHeel] = {{f.l_heel}};
 }
@@ -90,6 +91,36 @@ KeypointLayout make_body25() {
   return l;
 }
 
+// MediaPipe BlazePose GHUM's 33 landmarks: a face (eyes with their corners, ears, mouth), the COCO limbs in another
+// order, three points of each hand, heels and foot tips (the "foot index", between the first toes' tips).
+KeypointLayout make_blazepose33() {
+  KeypointLayout l{LayoutId::blazepose33, "BLAZEPOSE_33",
+                   {"Nose", "LEyeInner", "LEye", "LEyeOuter", "REyeInner", "REye", "REyeOuter", "LEar", "REar",
+                    "LMouth", "RMouth", "LShoulder", "RShoulder", "LElbow", "RElbow", "LWrist", "RWrist",
+                    "LPinky", "RPinky", "LIndex", "RIndex", "LThumb", "RThumb", "LHip", "RHip", "LKnee", "RKnee",
+                    "LAnkle", "RAnkle", "LHeel", "RHeel", "LFootIndex", "RFootIndex"},
+                   {},
+                   {{1, 4}, {2, 5}, {3, 6}, {7, 8}, {9, 10}, {11, 12}, {13, 14}, {15, 16}, {17, 18}, {19, 20},
+                    {21, 22}, {23, 24}, {25, 26}, {27, 28}, {29, 30}, {31, 32}}};
+  l.joint_sources[kHead] = {{7, 8}, {0}};
+  l.joint_sources[kNeck] = {{11, 12}};
+  l.joint_sources[kRShoulder] = {{12}};
+  l.joint_sources[kRElbow] = {{14}};
+  l.joint_sources[kRHand] = {{16}};
+  l.joint_sources[kLShoulder] = {{11}};
+  l.joint_sources[kLElbow] = {{13}};
+  l.joint_sources[kLHand] = {{15}};
+  l.joint_sources[kRHip] = {{24}};
+  l.joint_sources[kRKnee] = {{26}};
+  l.joint_sources[kRFoot] = {{28}};
+  l.joint_sources[kLHip] = {{23}};
+  l.joint_sources[kLKnee] = {{25}};
+  l.joint_sources[kLFoot] = {{27}};
+  l.joint_sources[kRoot] = {{23, 24}};
+  add_feet(l, {32, -1, 30, 31, -1, 29});
+  return l;
+}
+
 const std::vector<KeypointLayout>& table() {
   static const std::vector<KeypointLayout> layouts = {
       make_body25(),
@@ -104,6 +135,7 @@ const std::vector<KeypointLayout>& table() {
                                        "LHeel", "RHeel"}),
                    {{17}, {3, 4}, {0}}, {{18}, {5, 6}}, {{11, 12}, {19}},
                    concat(kCocoMirror, {{20, 21}, {22, 23}, {24, 25}}), {21, 23, 25, 20, 22, 24}),
+      make_blazepose33(),
   };
   return layouts;
 }
@@ -125,7 +157,7 @@ const KeypointLayout& layout(LayoutId id) {
 
 const std::vector<LayoutId>& all_layouts() {
   static const std::vector<LayoutId> ids = {LayoutId::body25, LayoutId::body25b, LayoutId::coco17,
-                                            LayoutId::halpe26};
+                                            LayoutId::halpe26, LayoutId::blazepose33};
   return ids;
 }
 
@@ -134,9 +166,11 @@ LayoutId layout_for_count(size_t keypoint_count) {
     case 25: return LayoutId::body25;
     case 17: return LayoutId::coco17;
     case 26: return LayoutId::halpe26;
+    case 33: return LayoutId::blazepose33;
     default:
       throw Error(Errc::invalid_argument, "no known keypoint layout has " + std::to_string(keypoint_count) +
-                                              " keypoints (known: BODY_25 and BODY_25B 25, COCO_17 17, HALPE_26 26)");
+                                              " keypoints (known: BODY_25 and BODY_25B 25, COCO_17 17, HALPE_26 26, "
+                                              "BLAZEPOSE_33 33)");
   }
 }
 

@@ -8,7 +8,7 @@
 
 namespace octocap {
 
-enum class LayoutId : int { automatic = 0, body25 = 1, body25b = 2, coco17 = 3, halpe26 = 4 };
+enum class LayoutId : int { automatic = 0, body25 = 1, body25b = 2, coco17 = 3, halpe26 = 4, blazepose33 = 5 };
 
 struct KeypointLayout {
   LayoutId id;
@@ -23,7 +23,7 @@ struct KeypointLayout {
 
 const KeypointLayout& layout(LayoutId id);  // throws Error for automatic/unknown ids
 const std::vector<LayoutId>& all_layouts();
-// AUTO resolution from a keypoint count: 25 -> BODY_25, 17 -> COCO_17, 26 -> HALPE_26.
+// AUTO resolution from a keypoint count: 25 -> BODY_25, 17 -> COCO_17, 26 -> HALPE_26, 33 -> BLAZEPOSE_33.
 LayoutId layout_for_count(size_t keypoint_count);
 // Case-insensitive; accepts "COCO" for COCO_17, "BODY25B" without underscore, etc.
 bool layout_from_name(const std::string& name, LayoutId* out);

@@ -85,6 +85,29 @@ std::vector<DetectedPerson> decode_movenet(const Tensor& t, int in_width, int in
   return {p};
 }
 
+std::vector<DetectedPerson> decode_blazepose(const Tensor& landmarks, const Tensor& flag, size_t K, double min_score) {
+  // 39 landmarks of (x, y, z, visibility, presence), the last six the model's own alignment points.
+  constexpr size_t kLandmarks = 39, kValues = 5;
+  expect(landmarks.data.size() == kLandmarks * kValues && landmarks.data.size() == element_count(landmarks) && K <= kLandmarks,
+         landmarks, "blazepose", "195 landmark values (39 x 5)");
+  expect(flag.data.size() == 1 && element_count(flag) == 1, flag, "blazepose", "one person-flag value");
+  const double score = flag.data[0];  // already a probability (the graph ends in a sigmoid)
+  if (!(score >= min_score)) return {};
+  auto sigmoid = [](double x) { return 1 / (1 + std::exp(-x)); };
+  DetectedPerson p;
+  p.keypoints.resize(K);
+  for (size_t k = 0; k < K; ++k) {
+    const float* v = &landmarks.data[k * kValues];
+    // Input pixels with 0 at the input's edge, as MoveNet's normalised coordinates: -0.5 to pixel centres. The
+    // visibility (in the picture and not hidden) is the keypoint's confidence, as Pose2Sim takes it.
+    p.keypoints[k] = {v[0] - 0.5, v[1] - 0.5, sigmoid(v[3])};
+    if (!std::isfinite(p.keypoints[k].x) || !std::isfinite(p.keypoints[k].y)) p.keypoints[k].confidence = 0;
+  }
+  p.score = score;
+  p.box = keypoint_box(p.keypoints, 0.2);
+  return {p};
+}
+
 std::vector<DetectedPerson> decode_movenet_multipose(const Tensor& t, int in_width, int in_height, size_t K,
                                                      double min_score) {
   const int64_t row = static_cast<int64_t>(3 * K + 5);
@@ -189,7 +212,7 @@ std::vector<DetectedPerson> decode_yolo_pose(const Tensor& t, size_t K, double m
 
 std::vector<DetectedPerson> decode_pose(const ModelCard& card, const std::vector<Tensor>& outputs, int in_width,
                                         int in_height, size_t K) {
-  const size_t needed = card.output == OutputKind::simcc ? 2 : 1;
+  const size_t needed = card.output == OutputKind::simcc || card.output == OutputKind::blazepose ? 2 : 1;
   if (outputs.size() < needed)
     throw Error(Errc::invalid_argument, "model has " + std::to_string(outputs.size()) + " outputs, output kind \"" +
                                             output_kind_name(card.output) + "\" needs " + std::to_string(needed));
@@ -199,6 +222,7 @@ std::vector<DetectedPerson> decode_pose(const ModelCard& card, const std::vector
       return decode_movenet_multipose(outputs[0], in_width, in_height, K, card.score_threshold);
     case OutputKind::heatmap: return decode_heatmaps(outputs[0], in_width, in_height, K);
     case OutputKind::simcc: return decode_simcc(outputs[0], outputs[1], in_width, in_height, K, card.simcc_ratio);
+    case OutputKind::blazepose: return decode_blazepose(outputs[0], outputs[1], K, card.score_threshold);
     case OutputKind::yolo_pose:
       return decode_yolo_pose(outputs[0], K, card.score_threshold, static_cast<size_t>(card.max_people));
   }

@@ -35,6 +35,8 @@ std::vector<DetectedPerson> decode_movenet_multipose(const Tensor& t, int in_wid
 std::vector<DetectedPerson> decode_heatmaps(const Tensor& t, int in_width, int in_height, size_t K);
 std::vector<DetectedPerson> decode_simcc(const Tensor& x, const Tensor& y, int in_width, int in_height, size_t K,
                                          double ratio);
+// BlazePose GHUM landmarks ([1,195]: 39 x (x, y, z, visibility, presence), input pixels) and its person flag ([1,1]).
+std::vector<DetectedPerson> decode_blazepose(const Tensor& landmarks, const Tensor& flag, size_t K, double min_score);
 std::vector<DetectedPerson> decode_yolo_pose(const Tensor& t, size_t K, double min_score, size_t max_people);
 
 // Peak of a sampled 1D/2D signal refined by a parabola through the peak and its neighbours (at most half a bin).

@@ -51,6 +51,7 @@ const char* output_kind_name(OutputKind kind) {
     case OutputKind::heatmap: return "heatmap";
     case OutputKind::simcc: return "simcc";
     case OutputKind::yolo_pose: return "yolo_pose";
+    case OutputKind::blazepose: return "blazepose";
   }
   return "?";
 }
@@ -93,7 +94,8 @@ ModelCard read_model_card(const std::string& path) {
     const json& output = member(doc, "output", path);
     card.output = choice<OutputKind>(output, "kind", out_where,
                                      {{"movenet", OutputKind::movenet}, {"movenet_multipose", OutputKind::movenet_multipose},
-                                      {"heatmap", OutputKind::heatmap}, {"simcc", OutputKind::simcc}, {"yolo_pose", OutputKind::yolo_pose}});
+                                      {"heatmap", OutputKind::heatmap}, {"simcc", OutputKind::simcc}, {"yolo_pose", OutputKind::yolo_pose},
+                                      {"blazepose", OutputKind::blazepose}});
     card.max_people = output.contains("max_people") ? positive_int(output, "max_people", out_where) : 1;
     card.simcc_ratio = output.value("simcc_ratio", 2.0);
     card.score_threshold = output.value("score_threshold", 0.25);

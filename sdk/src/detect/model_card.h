@@ -8,7 +8,7 @@
 
 namespace octocap {
 
-enum class OutputKind : int { movenet, movenet_multipose, heatmap, simcc, yolo_pose };
+enum class OutputKind : int { movenet, movenet_multipose, heatmap, simcc, yolo_pose, blazepose };
 enum class ElementType : int { int32, uint8, float32 };
 
 struct ModelCard {

@@ -34,7 +34,7 @@ const KeypointLayout& layout_for_markers(const std::vector<std::string>& markers
     if (hits > best_hits || (hits == best_hits && best && l.keypoints.size() < best->keypoints.size())) best = &l, best_hits = hits;
   }
   if (!best || best_hits < 12)
-    throw Error(Errc::parse, path + ": its marker names match no keypoint layout (BODY_25, BODY_25B, COCO_17, HALPE_26)");
+    throw Error(Errc::parse, path + ": its marker names match no keypoint layout (BODY_25, BODY_25B, COCO_17, HALPE_26, BLAZEPOSE_33)");
   return *best;
 }
 
