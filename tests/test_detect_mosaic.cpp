@@ -3,7 +3,11 @@
 #include <catch2/catch_test_macros.hpp>
 #include <random>
 
+#include <cmath>
+
+#include "core/layout.h"
 #include "detect/mosaic.h"
+#include "detect/turned_crop.h"
 
 using namespace octocap;
 using Catch::Approx;
@@ -64,4 +68,49 @@ TEST_CASE("mosaic people go to the tile holding most of their keypoints") {
   CHECK(got[7].confidence == 0);
   CHECK(got[8].confidence == Approx(0.1));
   CHECK(got[8].x == Approx(50).margin(1e-9));
+}
+
+// Crops turned with the body (detect/turned_crop.h): a picture's bright spot lands where the map says, and comes back.
+TEST_CASE("turned crops: a body leaning 90 deg is turned upright, and pixels map back to where they were") {
+  // A person lying along +x: hips at x 100, shoulders at x 300 (COCO_17: shoulders 5/6, hips 11/12).
+  const KeypointLayout& coco = layout(LayoutId::coco17);
+  Person2D lying(17);
+  lying[5] = {300, 90, 1}, lying[6] = {300, 110, 1}, lying[11] = {100, 92, 1}, lying[12] = {100, 108, 1};
+  lying[0] = {340, 100, 1}, lying[15] = {20, 95, 1}, lying[16] = {20, 105, 1};
+  const std::optional<double> lean = body_lean(lying, coco, 0.3);
+  REQUIRE(lean);
+  CHECK(*lean * 180 / M_PI == Approx(90).margin(1e-9));  // up the body is the image's +x
+  const TurnedCrop crop = turned_crop_around(lying, *lean, 1.0, 1.4, 0.3);
+  // The crop's height runs along the body: feet (x 20) to nose (x 340), padded; centred on the span's middle.
+  CHECK(crop.height == Approx(320 * 1.4));
+  CHECK(crop.centre_x == Approx(180));
+  CHECK(crop.centre_y == Approx(100));
+  Person2D no_hips(17);
+  no_hips[5] = lying[5], no_hips[6] = lying[6];
+  CHECK_FALSE(body_lean(no_hips, coco, 0.3));
+
+  // A BGR picture, black, with a white 3x3 spot near the nose: in the canvas it is up (the head), back it is there.
+  const int W = 400, H = 200;
+  std::vector<uint8_t> pixels(W * H * 3, 0);
+  const int spot_x = 330, spot_y = 104;
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int c = 0; c < 3; ++c) pixels[((spot_y + dy) * W + spot_x + dx) * 3 + c] = 255;
+  const ImageView image{pixels.data(), W, H, W * 3, PixelFormat::bgr8};
+  RgbCanvas canvas;
+  canvas.reset(448, 448);  // one canvas pixel per source pixel (crop height 448)
+  draw_turned(image, crop, canvas);
+  double x = 0, y = 0, weight = 0;  // the spot's centroid in the canvas
+  for (int i = 0; i < canvas.width * canvas.height; ++i) {
+    const double v = canvas.pixels[i * 3];
+    x += v * (i % canvas.width), y += v * (i / canvas.width), weight += v;
+  }
+  REQUIRE(weight == Approx(9 * 255).epsilon(0.05));  // all of it, and nothing else
+  x /= weight, y /= weight;
+  CHECK(y < canvas.height / 2.0 - 100);  // the head end is up
+  turned_to_source(crop, canvas.width, canvas.height, x, y);
+  CHECK(x == Approx(spot_x).margin(0.05));
+  CHECK(y == Approx(spot_y).margin(0.05));
+  // Past the picture's edge the canvas stays black.
+  CHECK(canvas.pixels[0] == 0);
 }

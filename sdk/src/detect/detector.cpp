@@ -14,6 +14,7 @@
 #include "core/layout.h"
 #include "core/stats.h"
 #include "detect/ort_model.h"
+#include "detect/turned_crop.h"
 
 #ifndef OCTOCAP_DEFAULT_MODELS_DIR
 #define OCTOCAP_DEFAULT_MODELS_DIR "models"
@@ -34,9 +35,9 @@ bool ends_with(const std::string& s, const std::string& suffix) {
 int round_to_multiple(double v, int m) { return std::max(m, static_cast<int>(std::lround(v / m)) * m); }
 
 // A crop around a person box with the network's aspect, padded so limbs moving since the box stay inside.
+constexpr double kCropPad = 1.4;
 Rect crop_around(const Rect& box, double aspect) {
-  const double pad = 1.4;
-  const double h = std::max(box.height, box.width / aspect) * pad;
+  const double h = std::max(box.height, box.width / aspect) * kCropPad;
   const double w = h * aspect;
   return {box.x + box.width / 2 - w / 2, box.y + box.height / 2 - h / 2, w, h};
 }
@@ -117,14 +118,7 @@ std::pair<int, int> Detector::input_size_for(double aspect) const {
   return {round_to_multiple(h * aspect, card_.size_multiple), h};
 }
 
-std::vector<DetectedPerson> Detector::infer_region(const ImageView& view, const Rect& region) {
-  const auto t0 = Clock::now();
-  const auto [w, h] = input_size_for(region.width / region.height);
-  RgbCanvas canvas;
-  canvas.reset(w, h);
-  const Rect dst{0, 0, static_cast<double>(w), static_cast<double>(h)};
-  const Letterbox box = fit_letterbox(region, dst);
-  draw_letterboxed(view, region, dst, box, canvas);
+std::vector<DetectedPerson> Detector::infer_canvas(const RgbCanvas& canvas, std::chrono::steady_clock::time_point t0) {
   const auto t1 = Clock::now();
   const std::vector<Tensor> out = model_->run(canvas);
   {
@@ -133,7 +127,18 @@ std::vector<DetectedPerson> Detector::infer_region(const ImageView& view, const 
     timings_.inference_ms += ms_since(t1);
     ++timings_.inferences;
   }
-  std::vector<DetectedPerson> people = decode_pose(card_, out, w, h, layout(card_.layout).keypoints.size());
+  return decode_pose(card_, out, canvas.width, canvas.height, layout(card_.layout).keypoints.size());
+}
+
+std::vector<DetectedPerson> Detector::infer_region(const ImageView& view, const Rect& region) {
+  const auto t0 = Clock::now();
+  const auto [w, h] = input_size_for(region.width / region.height);
+  RgbCanvas canvas;
+  canvas.reset(w, h);
+  const Rect dst{0, 0, static_cast<double>(w), static_cast<double>(h)};
+  const Letterbox box = fit_letterbox(region, dst);
+  draw_letterboxed(view, region, dst, box, canvas);
+  std::vector<DetectedPerson> people = infer_canvas(canvas, t0);
   // Back to view pixels; keypoints on the padding are the model's guesses at what it cannot see.
   const double vx0 = std::max(0.0, region.x), vy0 = std::max(0.0, region.y);
   const double vx1 = std::min<double>(view.width, region.x + region.width);
@@ -145,6 +150,29 @@ std::vector<DetectedPerson> Detector::infer_region(const ImageView& view, const 
       if (k.x < vx0 || k.x > vx1 || k.y < vy0 || k.y > vy1) k.confidence = 0;
     }
     p.box = {box.to_source_x(p.box.x), box.to_source_y(p.box.y), p.box.width / box.scale, p.box.height / box.scale};
+  }
+  return people;
+}
+
+std::vector<DetectedPerson> Detector::infer_crop(const ImageView& view, const Rect& box, const Person2D* person) {
+  const double aspect = static_cast<double>(card_.input_width) / card_.input_height;
+  const std::optional<double> lean =
+      card_.upright && person ? body_lean(*person, layout(card_.layout), config_.min_confidence) : std::nullopt;
+  if (!lean) return infer_region(view, crop_around(box, aspect));
+  const TurnedCrop crop = turned_crop_around(*person, *lean, aspect, kCropPad, config_.min_confidence);
+  if (!(crop.height > 0)) return infer_region(view, crop_around(box, aspect));
+  const auto t0 = Clock::now();
+  const auto [w, h] = input_size_for(aspect);
+  RgbCanvas canvas;
+  canvas.reset(w, h);
+  draw_turned(view, crop, canvas);
+  std::vector<DetectedPerson> people = infer_canvas(canvas, t0);
+  for (DetectedPerson& p : people) {
+    for (Keypoint2D& k : p.keypoints) {
+      turned_to_source(crop, w, h, k.x, k.y);
+      if (k.x < 0 || k.x > view.width || k.y < 0 || k.y > view.height) k.confidence = 0;  // a guess past the picture
+    }
+    p.box = keypoint_box(p.keypoints, config_.min_confidence);
   }
   return people;
 }
@@ -189,7 +217,6 @@ std::vector<DetectedPerson> Detector::detect_view(size_t v, const ImageView& vie
   const Rect whole{0, 0, static_cast<double>(view.width), static_cast<double>(view.height)};
   if (config_.mode == DetectMode::per_view) return infer_region(view, whole);
   // Crop: around each hinted person, else around last frame's people, else find someone on the whole view first.
-  const double aspect = static_cast<double>(card_.input_width) / card_.input_height;
   const size_t wanted = config_.find_new_people ? config_.max_people : 1;
   // Each crop's box, and the person it should find (the hint; none for last frame's boxes).
   std::vector<Rect> boxes;
@@ -199,7 +226,12 @@ std::vector<DetectedPerson> Detector::detect_view(size_t v, const ImageView& vie
       const Rect box = keypoint_box(hint, 0.01);
       if ((box.width > 0 || box.height > 0) && boxes.size() < wanted) boxes.push_back(box), expected.push_back(&hint);
     }
-  if (boxes.empty()) boxes = last_boxes_[v], expected.assign(boxes.size(), nullptr);
+  // Whose keypoints shape each crop (its turn with the body): the hint, else last frame's person.
+  std::vector<const Person2D*> shapes = expected;
+  if (boxes.empty()) {
+    boxes = last_boxes_[v], expected.assign(boxes.size(), nullptr);
+    for (const Person2D& p : last_people_[v]) shapes.push_back(&p);
+  }
   if (boxes.size() > wanted) boxes.resize(wanted), expected.resize(wanted);
   std::vector<DetectedPerson> people;
   auto add_unless_seen = [&](DetectedPerson p) {
@@ -217,9 +249,11 @@ std::vector<DetectedPerson> Detector::detect_view(size_t v, const ImageView& vie
     if (box.width <= 0 && box.height <= 0) return {};
     boxes.push_back(box);
     expected.push_back(nullptr);
+    last_people_[v] = {found[0].keypoints};
+    shapes.assign(1, &last_people_[v][0]);
   }
   for (size_t i = 0; i < boxes.size(); ++i) {
-    auto found = infer_region(view, crop_around(boxes[i], aspect));
+    auto found = infer_crop(view, boxes[i], i < shapes.size() ? shapes[i] : nullptr);
     if (found.empty()) continue;
     if (found.size() == 1 && !searches) {  // one person, as always
       add_unless_seen(std::move(found[0]));
@@ -248,9 +282,10 @@ std::vector<DetectedPerson> Detector::detect_view(size_t v, const ImageView& vie
   }
   // An empty box (nobody confident) is no box: next frame then looks at the whole view again.
   last_boxes_[v].clear();
+  last_people_[v].clear();
   for (const DetectedPerson& p : people) {
     const Rect box = keypoint_box(p.keypoints, config_.min_confidence);
-    if (box.width > 0 || box.height > 0) last_boxes_[v].push_back(box);
+    if (box.width > 0 || box.height > 0) last_boxes_[v].push_back(box), last_people_[v].push_back(p.keypoints);
   }
   return people;
 }
@@ -272,6 +307,7 @@ std::vector<std::vector<DetectedPerson>> Detector::detect(const std::vector<Imag
   } else {
     result.resize(views.size());
     last_boxes_.resize(views.size());
+    last_people_.resize(views.size());
     frames_since_search_.resize(views.size(), 0);
     // Views are independent here: up to parallel_ of them at once, each writing only its own slots.
     std::atomic<size_t> next{0};

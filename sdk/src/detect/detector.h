@@ -2,6 +2,7 @@
 // around where the person was (one inference each, on more pixels of the person). Keypoints come back in each
 // view's own pixel coordinates.
 #pragma once
+#include <chrono>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -64,7 +65,12 @@ class Detector {
   const DetectTimings& timings() const { return timings_; }
 
  private:
+  // The network on a prepared input (preparing it began at t0: the timings count it), in input pixels.
+  std::vector<DetectedPerson> infer_canvas(const RgbCanvas& canvas, std::chrono::steady_clock::time_point t0);
   std::vector<DetectedPerson> infer_region(const ImageView& view, const Rect& region);
+  // A crop around `person`'s keypoints: turned with the body when the card asks for it and the person has shoulders
+  // and hips, else level (crop_around of `box`).
+  std::vector<DetectedPerson> infer_crop(const ImageView& view, const Rect& box, const Person2D* person);
   std::vector<DetectedPerson> detect_view(size_t v, const ImageView& view);
   std::vector<std::vector<DetectedPerson>> detect_mosaic(const std::vector<ImageView>& views);
   std::pair<int, int> input_size_for(double aspect) const;
@@ -78,6 +84,7 @@ class Detector {
   const Person2D& first_hint(size_t v) const;
   std::vector<std::vector<Person2D>> hints_;
   std::vector<std::vector<Rect>> last_boxes_;  // the crop mode's fallback when no hint was given
+  std::vector<std::vector<Person2D>> last_people_;  // whose boxes those are (for a turned crop)
   std::vector<int> frames_since_search_;       // per view, find_new_people
   DetectTimings timings_;
 };

@@ -20,6 +20,7 @@ struct ModelCard {
   ElementType element = ElementType::float32;
   bool nchw = false;
   bool bgr = false;
+  bool upright = false;  // the model wants the body upright in its input: crops turn with the person
   std::array<float, 3> mean{0, 0, 0}, scale{1, 1, 1};
   OutputKind output = OutputKind::movenet;
   int max_people = 1;
