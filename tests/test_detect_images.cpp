@@ -23,6 +23,15 @@ testing::Calib load_demo_calibration() {
   return testing::Calib(c);
 }
 
+// No temporal filter: each frame's detections are measured as they are.
+testing::Session unfiltered_session(const testing::Calib& calib, octocap_layout_t layout) {
+  octocap_session_config_t cfg;
+  octocap_session_config_init(&cfg);
+  cfg.layout = layout;
+  cfg.filter = OCTOCAP_FILTER_NONE;
+  return testing::make_session(calib.get(), cfg);
+}
+
 std::vector<cv::VideoCapture> open_demo_videos() {
   std::vector<cv::VideoCapture> videos;
   for (int c = 1; c <= 4; ++c) {
@@ -45,11 +54,7 @@ TEST_CASE("solving real multi-camera videos from images matches Pose2Sim's repro
   std::vector<cv::VideoCapture> videos = open_demo_videos();
   for (octocap_detect_mode_t mode : {OCTOCAP_DETECT_CROP, OCTOCAP_DETECT_MOSAIC}) {
     INFO("detect mode " << mode);
-    octocap_session_config_t cfg;
-    octocap_session_config_init(&cfg);
-    cfg.layout = OCTOCAP_LAYOUT_COCO_17;
-    cfg.filter = OCTOCAP_FILTER_NONE;
-    testing::Session s = testing::make_session(calib.get(), cfg);
+    testing::Session s = unfiltered_session(calib, OCTOCAP_LAYOUT_COCO_17);
     octocap_detector_config_t detector;
     octocap_detector_config_init(&detector);
     detector.mode = mode;
@@ -92,11 +97,7 @@ TEST_CASE("BlazePose on the real videos: heels and foot tips from pixels, the fe
           "[real]") {
   testing::Calib calib = load_demo_calibration();
   std::vector<cv::VideoCapture> videos = open_demo_videos();
-  octocap_session_config_t cfg;
-  octocap_session_config_init(&cfg);
-  cfg.layout = OCTOCAP_LAYOUT_BLAZEPOSE_33;
-  cfg.filter = OCTOCAP_FILTER_NONE;
-  testing::Session s = testing::make_session(calib.get(), cfg);
+  testing::Session s = unfiltered_session(calib, OCTOCAP_LAYOUT_BLAZEPOSE_33);
   octocap_detector_config_t detector;
   octocap_detector_config_init(&detector);
   std::snprintf(detector.model, sizeof detector.model, "%s", "blazepose-full");
