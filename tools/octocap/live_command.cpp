@@ -95,6 +95,7 @@ int live(const LiveOptions& o) {
                 static_cast<unsigned long long>(cam.used), static_cast<unsigned long long>(cam.dropped),
                 static_cast<unsigned long long>(cam.reconnects), cam.fps, cam.nominal_fps);
     if (o.cameras[c].rfind("dds://", 0) == 0) std::printf(", %s, clock offset %.1f ms", o.cameras[c].c_str(), cam.clock_offset_ms);
+    else if (cam.stream_clock) std::printf(", times from the stream's clock");
     std::printf("\n");
   }
   if (!o.output.empty() || !o.csv.empty() || !o.bvh.empty()) std::printf("  wrote %s\n", writers.written().c_str());
