@@ -35,7 +35,7 @@ TEST_CASE("BVH round trip: export, parse back, the same joint positions within 1
   }
   const std::pair<const char*, int> joints[] = {
       {"Neck", kNeck},        {"Neck_end", kHead},       {"RightArm", kRShoulder}, {"RightForeArm", kRElbow},
-      {"RightForeArm_end", kRHand}, {"LeftArm", kLShoulder}, {"LeftForeArm", kLElbow}, {"LeftForeArm_end", kLHand},
+      {"RightHand", kRHand}, {"LeftArm", kLShoulder}, {"LeftForeArm", kLElbow}, {"LeftHand", kLHand},
       {"RightUpLeg", kRHip},  {"RightLeg", kRKnee},      {"RightFoot", kRFoot},    {"RightFoot_end", kRToe},
       {"LeftUpLeg", kLHip},   {"LeftLeg", kLKnee},       {"LeftFoot", kLFoot},     {"LeftFoot_end", kLToe}};
   double worst_file = 0, worst_truth = 0;

@@ -93,7 +93,7 @@ TEST_CASE("solving real multi-camera videos from images matches Pose2Sim's repro
   }
 }
 
-TEST_CASE("BlazePose on the real videos: heels and foot tips from pixels, the feet bones driven, a lean kept",
+TEST_CASE("BlazePose on the real videos: heels, foot tips and hands from pixels, feet and hand bones, a lean kept",
           "[real]") {
   testing::Calib calib = load_demo_calibration();
   std::vector<cv::VideoCapture> videos = open_demo_videos();
@@ -108,7 +108,7 @@ TEST_CASE("BlazePose on the real videos: heels and foot tips from pixels, the fe
   const uint32_t K = 33;
   testing::Pose2SimReference score(kDemo + "/opensim/Balancing_for_IK.trc", OCTOCAP_LAYOUT_BLAZEPOSE_33);
   std::vector<cv::Mat> images(4);
-  size_t feet_solved = 0, feet_bones = 0;
+  size_t feet_solved = 0, feet_bones = 0, hand_bones = 0;
   for (int f = 0; f < first + frames; ++f) {
     std::vector<octocap_image_t> views;
     for (int c = 0; c < 4; ++c) {
@@ -127,16 +127,19 @@ TEST_CASE("BlazePose on the real videos: heels and foot tips from pixels, the fe
     octocap_bone_pose_t bones[OCTOCAP_BONE_COUNT];
     REQUIRE(octocap_session_get_bones(s.get(), OCTOCAP_FRAME_RIG, bones, OCTOCAP_BONE_COUNT, &n) == OCTOCAP_OK);
     feet_bones += bones[OCTOCAP_BONE_R_FOOT].valid + bones[OCTOCAP_BONE_L_FOOT].valid;
+    hand_bones += bones[OCTOCAP_BONE_R_HAND].valid + bones[OCTOCAP_BONE_L_HAND].valid;
   }
   std::vector<double> mm;
   for (double d : score.distance_m) mm.push_back(1000 * d);
   INFO("solved " << score.solved << "/" << frames * K << ", feet keypoints " << feet_solved << "/" << frames * 4
-                 << ", foot bones " << feet_bones << "/" << frames * 2 << ", median reprojection "
+                 << ", foot bones " << feet_bones << "/" << frames * 2 << ", hand bones " << hand_bones << "/"
+                 << frames * 2 << ", median reprojection "
                  << median(score.reprojection_px) << " px, median distance to Pose2Sim (same names, heels included) "
                  << median(mm) << " mm");
   CHECK(score.solved >= 0.95 * frames * K);  // measured 98 %; level crops: 78 %
   CHECK(feet_solved >= 0.85 * frames * 4);  // measured 92 %: the foot in the air is the one missed
   CHECK(feet_bones >= 0.7 * frames * 2);    // measured 80 %: a foot bone needs its ankle, heel and tip
+  CHECK(hand_bones >= 0.85 * frames * 2);  // measured 98 %
   CHECK(median(score.reprojection_px) <= 10.7);  // Pose2Sim's median on this take
   CHECK(median(mm) < 80.0);  // measured 60: BlazePose's hips, shoulders and heels sit a few cm from BODY_25B's
 }

@@ -65,7 +65,7 @@ TEST_CASE("session frames read through the frame family give exactly the 0.x que
     CHECK(p.id == 1);
     CHECK(p.keypoints_total == 25);
     CHECK(p.keypoints_solved == 25);
-    CHECK(p.joints_solved == OCTOCAP_JOINT_COUNT);
+    CHECK(p.joints_solved == OCTOCAP_JOINT_COUNT - 2);  // all but the knuckles: BODY_25 has no hand points
     CHECK(p.views_with_person >= 4);
     CHECK(p.mean_reprojection_error_px > 0);
     CHECK(p.mean_reprojection_error_px < 5);

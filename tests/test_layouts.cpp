@@ -15,11 +15,13 @@ TEST_CASE("every layout maps every skeleton joint onto valid keypoints", "[layou
     INFO(l.name);
     std::set<std::string> names(l.keypoints.begin(), l.keypoints.end());
     REQUIRE(names.size() == l.keypoints.size());  // no duplicate names
-    // Every layout has the paper's joints; feet (toes and heels) all or none: COCO_17 has none.
-    const bool feet = id != LayoutId::coco17;
+    // Every layout has the paper's joints; feet (toes and heels) all or none: COCO_17 has none; knuckles only where
+    // there are hand points (BLAZEPOSE_33).
+    const bool feet = id != LayoutId::coco17, hands = id == LayoutId::blazepose33;
     for (int j = 0; j < kJointCount; ++j) {
       INFO(joint_names()[j]);
-      REQUIRE(l.joint_sources[j].empty() == (j > kRoot && !feet));
+      const bool has = j <= kRoot || (j <= kLHeel ? feet : hands);
+      REQUIRE(l.joint_sources[j].empty() == !has);
       for (const auto& alt : l.joint_sources[j]) {
         REQUIRE_FALSE(alt.empty());
         for (int k : alt) REQUIRE((k >= 0 && k < static_cast<int>(l.keypoints.size())));

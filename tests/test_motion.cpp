@@ -90,9 +90,11 @@ TEST_CASE("a keypoint CSV plays back as skeleton joints from the layout's source
 
   octocap_bone_pose_t bones[OCTOCAP_BONE_COUNT];
   REQUIRE(octocap_motion_bones(y_up.m, 10, OCTOCAP_FRAME_RIG, bones, OCTOCAP_BONE_COUNT, &n) == OCTOCAP_OK);
-  for (const auto& b : bones) {
-    CHECK(b.valid == 1);
-    CHECK(b.length_m > 0.05f);
+  for (int i = 0; i < OCTOCAP_BONE_COUNT; ++i) {
+    // The CSV's layout has no hand points: every bone but the hands.
+    const bool hand = i == OCTOCAP_BONE_R_HAND || i == OCTOCAP_BONE_L_HAND;
+    CHECK(bones[i].valid == (hand ? 0u : 1u));
+    if (!hand) CHECK(bones[i].length_m > 0.05f);
   }
 }
 

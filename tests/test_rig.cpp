@@ -37,6 +37,9 @@ SkeletonJoints tpose() {
     j[toe] = j[ankle] + 0.17 * tpose_directions()[kBoneLFoot];
     j[heel] = j[ankle] + Eigen::Vector3d(0, -0.06, -0.05);
   }
+  // Hands along the arms, knuckles 9 cm past the wrist.
+  j[kLKnuckles] = j[kLHand] + 0.09 * tpose_directions()[kBoneLHand];
+  j[kRKnuckles] = j[kRHand] + 0.09 * tpose_directions()[kBoneRHand];
   return j;
 }
 
@@ -66,12 +69,13 @@ TEST_CASE("joints rebuilt from the quaternions and bone lengths match real motio
   for (const auto& frame : motion.frames) {
     const SkeletonJoints truth = testing::skeleton_from_keypoints(frame, LayoutId::body25);
     const SkeletonPose pose = solve_bones(truth);
-    for (int b = 0; b < kBoneCount; ++b) REQUIRE(pose[b].valid);
+    // Every bone but the hands: BODY_25 has no hand points, so no knuckles.
+    for (int b = 0; b < kBoneCount; ++b) REQUIRE(pose[b].valid == (b != kBoneRHand && b != kBoneLHand));
     const SkeletonJoints rebuilt = testing::rebuild_from_bones(pose, truth[kRoot]);
     for (int j = 0; j < kJointCount; ++j) worst = std::max(worst, (rebuilt[j] - truth[j]).norm());
     // Local rotations chain into the global ones.
     for (int b = 1; b < kBoneCount; ++b)
-      REQUIRE(angle_between(pose[bone_table()[b].parent].global * pose[b].local, pose[b].global) < 1e-9);
+      if (pose[b].valid) REQUIRE(angle_between(pose[bone_table()[b].parent].global * pose[b].local, pose[b].global) < 1e-9);
   }
   REQUIRE(worst < 1e-9);
 }
@@ -212,6 +216,51 @@ TEST_CASE("a foot flexes, points and rolls with its toes and heel; held while th
   CHECK_FALSE(pose[kBoneRFoot].valid);
   CHECK(pose[kBoneLFoot].valid);
   CHECK(pose[kBoneRLowerLeg].valid);
+}
+
+TEST_CASE("a palm turns: the hand rolls with its knuckles' line, the forearm's twist; held while not seen", "[rig]") {
+  const SkeletonJoints rest = tpose();
+  for (auto [bone, side] : {std::pair{kBoneRHand, 0}, std::pair{kBoneLHand, 1}}) {
+    const Eigen::Vector3d axis = tpose_directions()[bone];
+    for (double turn : {-90.0, -45.0, 0.0, 30.0, 80.0}) {  // palm down (T-pose) through the thumb up to palm up
+      const Eigen::AngleAxisd truth(turn * M_PI / 180, axis);
+      BodyCues cues;
+      // Index knuckle minus little finger knuckle: forward (+Z) with the palm down, on either hand.
+      (side == 0 ? cues.r_palm_across : cues.l_palm_across) = truth * Eigen::Vector3d(0, 0, 0.08);
+      const SkeletonPose pose = BoneSolver{}.solve(rest, cues);
+      REQUIRE(pose[bone].valid);
+      INFO(bone_table()[bone].name << ", turned " << turn << " deg");
+      CHECK(angle_between(pose[bone].local, Eigen::Quaterniond(truth)) < 1e-9);
+      // The arm itself does not roll: the forearm's twist is the hand's roll against it.
+      CHECK(angle_between(pose[bone == kBoneRHand ? kBoneRLowerArm : kBoneLLowerArm].local,
+                          Eigen::Quaterniond::Identity()) < 1e-9);
+    }
+  }
+  // Seen turned 80 deg, then the hand points lost (a fist, a hand behind the back): the roll holds, easing back.
+  BoneSolver solver;
+  BodyCues seen;
+  const Eigen::AngleAxisd turned(80 * M_PI / 180, tpose_directions()[kBoneRHand]);
+  seen.r_palm_across = turned * Eigen::Vector3d(0, 0, 0.08);
+  solver.solve(rest, seen);
+  double first = 0, last = 0;
+  for (int i = 0; i < 10; ++i) {
+    const double off = angle_between(solver.solve(rest)[kBoneRHand].local, Eigen::Quaterniond(turned)) * 180 / M_PI;
+    if (i == 0) first = off;
+    last = off;
+  }
+  CHECK(first < 0.03 * 80);  // one frame's slow drift, no snap to the smallest rotation (80 deg away)
+  CHECK(last < 0.3 * 80);
+  CHECK(last > first);
+  // Knuckles on top of each other (a hand seen edge-on) say nothing: the smallest rotation, no flip.
+  BodyCues edge_on;
+  edge_on.r_palm_across = Eigen::Vector3d(-0.002, 0, 0);  // along the hand
+  CHECK(angle_between(BoneSolver{}.solve(rest, edge_on)[kBoneRHand].local, Eigen::Quaterniond::Identity()) < 1e-9);
+  // No knuckles (a layout without hand points): no hand bone, the arm as before.
+  SkeletonJoints no_hand = rest;
+  no_hand[kRKnuckles] = Eigen::Vector3d::Constant(std::nan(""));
+  const SkeletonPose pose = solve_bones(no_hand);
+  CHECK_FALSE(pose[kBoneRHand].valid);
+  CHECK(pose[kBoneRLowerArm].valid);
 }
 
 TEST_CASE("a missing joint invalidates its bone and the bones below it", "[rig]") {

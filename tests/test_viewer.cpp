@@ -112,7 +112,8 @@ TEST_CASE("retargeting onto a model in an A-pose, turned and with odd rest frame
       {"mixamorig:LeftLeg", "mixamorig:LeftUpLeg"}, {"mixamorig:LeftFoot", "mixamorig:LeftLeg"},
       {"mixamorig:RightUpLeg", "mixamorig:Hips"}, {"mixamorig:RightLeg", "mixamorig:RightUpLeg"},
       {"mixamorig:RightFoot", "mixamorig:RightLeg"}, {"mixamorig:LeftToeBase", "mixamorig:LeftFoot"},
-      {"mixamorig:RightToeBase", "mixamorig:RightFoot"}};
+      {"mixamorig:RightToeBase", "mixamorig:RightFoot"}, {"mixamorig:LeftHandMiddle1", "mixamorig:LeftHand"},
+      {"mixamorig:RightHandMiddle1", "mixamorig:RightHand"}};
   const float a = std::sqrt(0.5f);
   // Rest positions in the rig's axes (left +X, up +Y), then turned to face -X.
   const std::vector<Eigen::Vector3f> rest = {
@@ -120,7 +121,8 @@ TEST_CASE("retargeting onto a model in an A-pose, turned and with odd rest frame
       {0.18f + 0.28f * a, 1.45f - 0.28f * a, 0}, {0.18f + 0.53f * a, 1.45f - 0.53f * a, 0},
       {-0.05f, 1.48f, 0}, {-0.18f, 1.45f, 0}, {-0.18f - 0.28f * a, 1.45f - 0.28f * a, 0},
       {-0.18f - 0.53f * a, 1.45f - 0.53f * a, 0}, {0.1f, 0.95f, 0}, {0.1f, 0.5f, 0.02f}, {0.1f, 0.08f, 0},
-      {-0.1f, 0.95f, 0}, {-0.1f, 0.5f, 0.02f}, {-0.1f, 0.08f, 0}, {0.1f, 0.02f, 0.14f}, {-0.1f, 0.02f, 0.14f}};
+      {-0.1f, 0.95f, 0}, {-0.1f, 0.5f, 0.02f}, {-0.1f, 0.08f, 0}, {0.1f, 0.02f, 0.14f}, {-0.1f, 0.02f, 0.14f},
+      {0.18f + 0.62f * a, 1.45f - 0.62f * a, 0}, {-0.18f - 0.62f * a, 1.45f - 0.62f * a, 0}};  // the hands' knuckles
   const Eigen::Matrix3f facing = Eigen::AngleAxisf(static_cast<float>(-M_PI / 2), Eigen::Vector3f::UnitY()).toRotationMatrix();
   std::mt19937 rng(3);
   std::vector<Eigen::Affine3f> globals;

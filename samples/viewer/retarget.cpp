@@ -75,6 +75,8 @@ Wanted wanted(int bone) {
     case OCTOCAP_BONE_L_LOWER_LEG: return {Side::left, {"leg", "lowerleg", "loleg", "shin", "calf", "knee", "tibia"}};
     case OCTOCAP_BONE_R_FOOT: return {Side::right, {"foot", "ankle", "tarsal"}};
     case OCTOCAP_BONE_L_FOOT: return {Side::left, {"foot", "ankle", "tarsal"}};
+    case OCTOCAP_BONE_R_HAND: return {Side::right, {"hand", "wrist", "palm"}};
+    case OCTOCAP_BONE_L_HAND: return {Side::left, {"hand", "wrist", "palm"}};
   }
   return {Side::none, {}};
 }
@@ -87,10 +89,10 @@ octocap_bone_info_t bone_info(int b) {
 
 std::string bone_name(int b) { return bone_info(b).name; }
 
-// A model without clavicles or feet still takes a pose: those bones then stay at rest relative to their parent.
+// A model without clavicles, feet or hands still takes a pose: those bones then stay at rest relative to their parent.
 bool optional_bone(int b) {
   return b == OCTOCAP_BONE_L_SHOULDER || b == OCTOCAP_BONE_R_SHOULDER || b == OCTOCAP_BONE_L_FOOT ||
-         b == OCTOCAP_BONE_R_FOOT;
+         b == OCTOCAP_BONE_R_FOOT || b == OCTOCAP_BONE_L_HAND || b == OCTOCAP_BONE_R_HAND;
 }
 
 }  // namespace

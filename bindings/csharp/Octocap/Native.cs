@@ -45,18 +45,18 @@ namespace Octocap
     public enum DetectMode : int { PerView = 0, Mosaic = 1, Crop = 2 }
     public enum PersonPick : int { All = 0, Largest = 1, MostConfident = 2, NearestPrevious = 3 }
 
-    /// <summary>The skeleton joints (octocap_joint_id_t): the paper's 14 and a root, then toes and heels (1.4).</summary>
+    /// <summary>The skeleton joints (octocap_joint_id_t): the paper's 14 and a root, then toes, heels and knuckles (1.4).</summary>
     public enum JointId : int
     {
         Head = 0, Neck, RShoulder, RElbow, RHand, LShoulder, LElbow, LHand, RHip, RKnee, RFoot, LHip, LKnee, LFoot,
-        Root, RToe, LToe, RHeel, LHeel, Count
+        Root, RToe, LToe, RHeel, LHeel, RKnuckles, LKnuckles, Count
     }
 
     /// <summary>Rig bones (octocap_bone_id_t); parents come before children.</summary>
     public enum BoneId : int
     {
         Root = 0, Torso, Head, RShoulder, RUpperArm, RLowerArm, LShoulder, LUpperArm, LLowerArm, RUpperLeg,
-        RLowerLeg, LUpperLeg, LLowerLeg, RFoot, LFoot, Count
+        RLowerLeg, LUpperLeg, LLowerLeg, RFoot, LFoot, RHand, LHand, Count
     }
 
     [StructLayout(LayoutKind.Sequential)]

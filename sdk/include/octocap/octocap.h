@@ -181,9 +181,9 @@ OCTOCAP_API octocap_result_t octocap_layout_from_name(const char* name, octocap_
 OCTOCAP_API const char* octocap_layout_keypoint_name(octocap_layout_t layout, uint32_t index);
 
 /**
- * The skeleton's joints: the paper's 14 plus a root at the hip centre, then (1.4) toes and heels. New joints are
- * only ever appended, so an index keeps its meaning. A joint the layout has no keypoints for (the feet of COCO_17,
- * MoveNet's layout) is never valid.
+ * The skeleton's joints: the paper's 14 plus a root at the hip centre, then (1.4) toes, heels and the hands'
+ * knuckles. New joints are only ever appended, so an index keeps its meaning. A joint the layout has no keypoints for
+ * (the feet of COCO_17, MoveNet's layout; the knuckles of every layout but BLAZEPOSE_33) is never valid.
  */
 typedef int32_t octocap_joint_id_t;
 /** Values of ::octocap_joint_id_t. */
@@ -207,16 +207,20 @@ enum octocap_joint_id_values {
   OCTOCAP_JOINT_L_TOE = 16,  /**< (1.4) */
   OCTOCAP_JOINT_R_HEEL = 17, /**< (1.4) */
   OCTOCAP_JOINT_L_HEEL = 18, /**< (1.4) */
-  OCTOCAP_JOINT_COUNT = 19   /**< 15 before 1.4. */
+  OCTOCAP_JOINT_R_KNUCKLES = 19, /**< (1.4) Between the index and little fingers' knuckles. */
+  OCTOCAP_JOINT_L_KNUCKLES = 20, /**< (1.4) */
+  OCTOCAP_JOINT_COUNT = 21   /**< 15 before 1.4. */
 };
 
 /**
  * Bones of the rig. ROOT carries the global orientation of the pelvis; every other bone goes from a parent
  * joint to a child joint and rotates relative to its parent bone. Every rotation is whole, twist included: the
  * upper arms and thighs roll with the plane of the bent elbow and knee (forearm and shin turn about their hinge),
- * the torso with the shoulder line, the head with ears, eyes and nose, the feet with the heel. A roll that a frame
- * cannot show (a straight limb, a face or heel not seen) holds its last value, easing back toward no roll of its
- * own over a few seconds. New bones are only ever appended (1.4: the feet).
+ * the torso with the shoulder line, the head with ears, eyes and nose, the feet with the heel, the hands with the
+ * palm (index to little finger knuckle: the hand's roll against the forearm is the forearm's twist, which an engine's
+ * humanoid rig spreads over its twist bones). A roll that a frame cannot show (a straight limb, a face, heel or palm
+ * not seen) holds its last value, easing back toward no roll of its own over a few seconds. New bones are only ever
+ * appended (1.4: the feet and hands).
  */
 typedef int32_t octocap_bone_id_t;
 /** Values of ::octocap_bone_id_t. */
@@ -237,7 +241,9 @@ enum octocap_bone_id_values {
   OCTOCAP_BONE_R_FOOT = 13, /**< (1.4) Ankle (OCTOCAP_JOINT_R_FOOT) to toes. Rest: forward (+Z) and 20 deg down,
                                  as a foot standing flat, so that an avatar's foot at rest is near the template. */
   OCTOCAP_BONE_L_FOOT = 14, /**< (1.4) */
-  OCTOCAP_BONE_COUNT = 15   /**< 13 before 1.4. */
+  OCTOCAP_BONE_R_HAND = 15, /**< (1.4) Wrist (OCTOCAP_JOINT_R_HAND) to knuckles. Rest: along the arm, palm down. */
+  OCTOCAP_BONE_L_HAND = 16, /**< (1.4) */
+  OCTOCAP_BONE_COUNT = 17   /**< 13 before 1.4. */
 };
 
 /** Static name of a skeleton joint ("r_elbow") or NULL. */

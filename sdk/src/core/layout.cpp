@@ -118,6 +118,8 @@ KeypointLayout make_blazepose33() {
   l.joint_sources[kLFoot] = {{27}};
   l.joint_sources[kRoot] = {{23, 24}};
   add_feet(l, {32, -1, 30, 31, -1, 29});
+  l.joint_sources[kRKnuckles] = {{20, 18}};  // index and little finger
+  l.joint_sources[kLKnuckles] = {{19, 17}};
   return l;
 }
 

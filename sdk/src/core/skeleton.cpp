@@ -10,7 +10,7 @@ const std::array<const char*, kJointCount>& joint_names() {
   static const std::array<const char*, kJointCount> names = {
       "head", "neck", "r_shoulder", "r_elbow", "r_hand", "l_shoulder", "l_elbow", "l_hand",
       "r_hip", "r_knee", "r_foot", "l_hip", "l_knee", "l_foot", "root",
-      "r_toe", "l_toe", "r_heel", "l_heel"};
+      "r_toe", "l_toe", "r_heel", "l_heel", "r_knuckles", "l_knuckles"};
   return names;
 }
 
@@ -33,6 +33,9 @@ const std::array<BoneDef, kBoneCount>& bone_table() {
       // The foot from the ankle (the joint the paper calls foot) to the toes; the heel gives its roll.
       {"r_foot", kBoneRLowerLeg, kRFoot, kRToe},
       {"l_foot", kBoneLLowerLeg, kLFoot, kLToe},
+      // The hand from the wrist (the paper's hand joint) to the knuckles; the palm's across gives its roll.
+      {"r_hand", kBoneRLowerArm, kRHand, kRKnuckles},
+      {"l_hand", kBoneLLowerArm, kLHand, kLKnuckles},
   }};
   return bones;
 }
@@ -47,7 +50,8 @@ const std::array<Eigen::Vector3d, kBoneCount>& tpose_directions() {
       Eigen::Vector3d(-1, 0, 0), Eigen::Vector3d(-1, 0, 0), Eigen::Vector3d(-1, 0, 0),
       Eigen::Vector3d(1, 0, 0),  Eigen::Vector3d(1, 0, 0),  Eigen::Vector3d(1, 0, 0),
       Eigen::Vector3d(0, -1, 0), Eigen::Vector3d(0, -1, 0), Eigen::Vector3d(0, -1, 0),
-      Eigen::Vector3d(0, -1, 0), kFootRest,                 kFootRest};
+      Eigen::Vector3d(0, -1, 0), kFootRest,                 kFootRest,
+      Eigen::Vector3d(-1, 0, 0), Eigen::Vector3d(1, 0, 0)};  // hands along the arms, palms down
   return dirs;
 }
 

@@ -74,6 +74,7 @@ Session::Session(const SessionConfig& config, Calibration calib)
   };
   nose_ = keypoint("Nose"), l_eye_ = keypoint("LEye"), r_eye_ = keypoint("REye");
   l_ear_ = keypoint("LEar"), r_ear_ = keypoint("REar");
+  r_index_ = keypoint("RIndex"), r_pinky_ = keypoint("RPinky"), l_index_ = keypoint("LIndex"), l_pinky_ = keypoint("LPinky");
   const int cams = static_cast<int>(calib_.size());
   if (cams < 2) throw Error(Errc::not_enough_views, "a session needs at least 2 cameras, the calibration has " +
                                                         std::to_string(cams));
@@ -404,6 +405,8 @@ void Session::finish_person(PersonResult& person, PersonState& state, double dt)
   cues.head_across = rig_point(l_ear_) - rig_point(r_ear_);
   if (!cues.head_across.allFinite()) cues.head_across = rig_point(l_eye_) - rig_point(r_eye_);
   cues.head_forward = rig_point(nose_) - rig_joints[kHead];
+  cues.r_palm_across = rig_point(r_index_) - rig_point(r_pinky_);
+  cues.l_palm_across = rig_point(l_index_) - rig_point(l_pinky_);
   person.bones = state.bone_solver.solve(rig_joints, cues);
 }
 

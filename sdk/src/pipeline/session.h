@@ -155,6 +155,8 @@ class Session {
   std::map<uint32_t, PersonState> states_;      // max_people != 1: per track id
   // The layout's face keypoints (-1 where it has none), for the head's turn.
   int nose_ = -1, l_eye_ = -1, r_eye_ = -1, l_ear_ = -1, r_ear_ = -1;
+  // ... and its hand points (index and little finger knuckles), for the palms' roll.
+  int r_index_ = -1, r_pinky_ = -1, l_index_ = -1, l_pinky_ = -1;
   int64_t last_timestamp_us_ = 0;
   bool has_timestamp_ = false;
   bool solved_any_ = false;

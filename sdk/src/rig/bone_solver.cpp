@@ -47,11 +47,11 @@ std::optional<Eigen::Quaterniond> aim(const Eigen::Vector3d& d0, const Eigen::Ve
 }
 
 // How a bone's roll is decided (see bone_solver.h).
-enum class Roll { none, hinge, shoulders, face, foot };
+enum class Roll { none, hinge, shoulders, face, foot, palm };
 
 struct RollRule {
   Roll kind = Roll::none;
-  int far_joint = -1;          // hinge: the end of the limb's second bone (hand, ankle); foot: the heel
+  int far_joint = -1;          // hinge: the end of the limb's second bone (hand, ankle); foot: the heel; palm: the wrist
   Eigen::Vector3d side_rest;   // the template's side direction: hinge axis, or left (+X)
   bool smoothed = false;       // the cue is noisy for its size: follow it part of the way each frame (follow())
   double max_roll = M_PI;      // the largest roll about the bone's own axis away from the smallest rotation
@@ -69,6 +69,8 @@ constexpr double kFootRollRange = 35 * kDegree;
 // A heel this close to the ankle (as a fraction of the foot's length) gives no roll to trust; fully from the second.
 // Feet are 2.5-3 times as long as heel to ankle; on the real take some heels were found 2 cm from the ankle.
 constexpr double kHeelFrom = 0.15, kHeelFull = 0.35;
+// Knuckles (index to little finger, ~8 cm) as a fraction of wrist to knuckles (~9 cm): below the first, no palm.
+constexpr double kKnucklesFrom = 0.3, kKnucklesFull = 0.6;
 
 // `target` (a local rotation with the same direction as `smallest`) with its roll about the bone's axis clamped to the
 // rule's range.
@@ -99,6 +101,11 @@ const std::array<RollRule, kBoneCount>& roll_rules() {
     // (on the real take, heels 2 cm from the ankle flipped the foot over).
     r[kBoneRFoot] = {Roll::foot, kRHeel, Eigen::Vector3d::UnitX(), true, kFootRollRange};
     r[kBoneLFoot] = {Roll::foot, kLHeel, Eigen::Vector3d::UnitX(), true, kFootRollRange};
+    // A hand in the T-pose, palm down, has its index knuckle in front of its little finger's (+Z) on either side. The
+    // knuckles are 7-9 cm apart, noisy as the heel is: followed a quarter of the way each frame. Wrist and forearm
+    // together turn a palm up or down and a little past: the roll is not clamped.
+    r[kBoneRHand] = {Roll::palm, kRHand, Eigen::Vector3d::UnitZ(), true};
+    r[kBoneLHand] = {Roll::palm, kLHand, Eigen::Vector3d::UnitZ(), true};
     return r;
   }();
   return rules;
@@ -138,6 +145,14 @@ std::optional<Eigen::Quaterniond> roll_cue(int b, const SkeletonJoints& j, const
       q = aim(rest, rule.side_rest, d, j[kLShoulder] - j[kRShoulder], sine);
       weight = smoothstep(kCueFrom, kCueFull, sine);
       break;
+    case Roll::palm: {
+      const Eigen::Vector3d& across = rule.far_joint == kRHand ? cues.r_palm_across : cues.l_palm_across;
+      if (!finite(across)) return std::nullopt;
+      q = aim(rest, rule.side_rest, d, across, sine);
+      // Knuckles found on top of each other (a hand seen edge-on in every view) say nothing.
+      weight = smoothstep(kCueFrom, kCueFull, sine) * smoothstep(kKnucklesFrom, kKnucklesFull, across.norm() / d.norm());
+      break;
+    }
     case Roll::face:
       // Left = up x forward in the template (+X = +Y x +Z): the nose turns the head when the ears are not seen.
       q = aim(rest, rule.side_rest, d, cues.head_across, sine);

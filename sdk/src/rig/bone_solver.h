@@ -12,11 +12,14 @@ namespace octocap {
 
 using SkeletonJoints = std::array<Eigen::Vector3d, kJointCount>;  // rig frame; NaN where missing
 
-// What the 15 joints cannot say about the head's turn: the face's across (the ears', else the eyes' left minus
-// right) and forward (nose minus the head's centre) directions, rig frame. NaN where the layout or the frame has none.
+// What the joints cannot say about the head's turn and the palms' roll: the face's across (the ears', else the eyes'
+// left minus right) and forward (nose minus the head's centre) directions; each palm's across (index knuckle minus
+// little finger knuckle). Rig frame; NaN where the layout or the frame has none.
 struct BodyCues {
   Eigen::Vector3d head_across = Eigen::Vector3d::Constant(std::nan(""));
   Eigen::Vector3d head_forward = Eigen::Vector3d::Constant(std::nan(""));
+  Eigen::Vector3d r_palm_across = Eigen::Vector3d::Constant(std::nan(""));
+  Eigen::Vector3d l_palm_across = Eigen::Vector3d::Constant(std::nan(""));
 };
 
 // The root's orientation comes from the hip line, its up between the world's (Y) and the spine's. A bone's direction
@@ -28,6 +31,8 @@ struct BodyCues {
 // - the torso: from the shoulder line (the chest's twist against the hips);
 // - the head: from the ears or eyes, else the nose (yaw, pitch, roll), held the same way when the face is not seen;
 // - the feet (ankle to toes): from the plane of ankle, toes and heel, held the same way when the heel is not seen;
+// - the hands (wrist to knuckles): from the palm's across (index to little finger), held the same way; the forearm's
+//   twist is the hand's roll against it (an engine's humanoid rig spreads it over its twist bones);
 // - every other bone (shoulders, forearms, shins): the smallest rotation that turns its template direction into its
 //   measured direction in its parent's frame, the paper's anti-spin correction in closed form (no roll of its own).
 // A bone whose joints or parent are missing is invalid (identity rotation) and so are its descendants.

@@ -15,7 +15,8 @@ constexpr double kCm = 100.0;
 
 const char* const kNames[kBoneCount] = {"Hips",     "Spine",       "Neck",         "RightShoulder", "RightArm",
                                         "RightForeArm", "LeftShoulder", "LeftArm", "LeftForeArm",   "RightUpLeg",
-                                        "RightLeg", "LeftUpLeg",   "LeftLeg",       "RightFoot", "LeftFoot"};
+                                        "RightLeg", "LeftUpLeg",   "LeftLeg",       "RightFoot", "LeftFoot",
+                                        "RightHand", "LeftHand"};
 
 // Where bone b's head sits in its parent bone's frame at rest (metres).
 Eigen::Vector3d rest_offset(int b, const std::vector<double>& len) {

@@ -123,6 +123,10 @@ SkeletonMotion from_bvh(const std::string& path) {
   // Toes are optional (a foot bone then has no target); files have no heel, so a foot's roll is the smallest one.
   const int toes[2] = {find_any({"RightToeBase_end", "RightToeBase", "RightToe", "rToe"}),
                        find_any({"LeftToeBase_end", "LeftToeBase", "LeftToe", "lToe"})};
+  // The knuckles: where the fingers start (CMU's RFingers: its FingerBase sits on the wrist; Mixamo-style Index1 or
+  // Middle1), else the hand's end site.
+  const int knuckles[2] = {find_any({"RFingers", "RightHandMiddle1", "RightHandIndex1", "RightHand_end", "rHand_end"}),
+                           find_any({"LFingers", "LeftHandMiddle1", "LeftHandIndex1", "LeftHand_end", "lHand_end"})};
   (void)root;  // required as proof of a humanoid hierarchy; the root joint is taken between the hips
   if (root < 0 || neck < 0 || (head < 0 && head_end < 0) || std::count(j, j + 12, -1) > 0)
     throw Error(Errc::parse, path + ": no humanoid skeleton found (expected CMU / Mixamo-style joint names: Hips, Neck, "
@@ -150,6 +154,8 @@ SkeletonMotion from_bvh(const std::string& path) {
     s[kRToe] = toes[0] >= 0 ? Eigen::Vector3d(P[toes[0]] * unit) : Eigen::Vector3d::Constant(kNaN);
     s[kLToe] = toes[1] >= 0 ? Eigen::Vector3d(P[toes[1]] * unit) : Eigen::Vector3d::Constant(kNaN);
     s[kRHeel] = s[kLHeel] = Eigen::Vector3d::Constant(kNaN);
+    s[kRKnuckles] = knuckles[0] >= 0 ? Eigen::Vector3d(P[knuckles[0]] * unit) : Eigen::Vector3d::Constant(kNaN);
+    s[kLKnuckles] = knuckles[1] >= 0 ? Eigen::Vector3d(P[knuckles[1]] * unit) : Eigen::Vector3d::Constant(kNaN);
     m.frames.push_back(s);
   }
   return m;

@@ -14,7 +14,7 @@ namespace {
 const char* const kUnityNames[kBoneCount] = {
     "Hips", "Spine", "Neck", "RightShoulder", "RightUpperArm", "RightLowerArm", "LeftShoulder",
     "LeftUpperArm", "LeftLowerArm", "RightUpperLeg", "RightLowerLeg", "LeftUpperLeg", "LeftLowerLeg",
-    "RightFoot", "LeftFoot"};
+    "RightFoot", "LeftFoot", "RightHand", "LeftHand"};
 
 // Where a bone starts in its parent's frame at rest (rig frame): the parent's tail, except for bones that
 // branch off the middle of their parent (shoulders and head at the neck = the torso's tail; legs at the hips).

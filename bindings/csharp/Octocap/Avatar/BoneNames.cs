@@ -9,7 +9,7 @@ namespace Octocap.Avatar
         {
             "Hips", "Spine", "Neck", "RightShoulder", "RightUpperArm", "RightLowerArm", "LeftShoulder",
             "LeftUpperArm", "LeftLowerArm", "RightUpperLeg", "RightLowerLeg", "LeftUpperLeg", "LeftLowerLeg",
-            "RightFoot", "LeftFoot"
+            "RightFoot", "LeftFoot", "RightHand", "LeftHand"
         };
 
         /// <summary>Godot 4's SkeletonProfileHumanoid bone names (what retargeted humanoids use), by <see cref="BoneId"/>.</summary>
@@ -17,7 +17,7 @@ namespace Octocap.Avatar
         {
             "Hips", "Spine", "Neck", "RightShoulder", "RightUpperArm", "RightLowerArm", "LeftShoulder",
             "LeftUpperArm", "LeftLowerArm", "RightUpperLeg", "RightLowerLeg", "LeftUpperLeg", "LeftLowerLeg",
-            "RightFoot", "LeftFoot"
+            "RightFoot", "LeftFoot", "RightHand", "LeftHand"
         };
     }
 }
