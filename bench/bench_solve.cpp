@@ -276,7 +276,7 @@ int main(int argc, char** argv) {
     synth::RigOptions rig;
     const Calibration cams = synth::make_camera_ring(rig);
     octocap_calibration_t* calib = make_calib(cams);
-    frame_queries(calib, make_frames(cams, synth::Motion{{motion.frames.front()}, motion.rate_hz}, LayoutId::body25));
+    frame_queries(calib, make_frames(cams, synth::Motion{{motion.frames.front()}, motion.rate_hz, {}}, LayoutId::body25));
     octocap_calibration_destroy(calib);
   }
   hull_vs_ray();

@@ -85,7 +85,7 @@ Motion load_cmu_motion(const std::string& path, size_t first, size_t count, size
     for (auto& p : P) p *= kCmuUnit;
     const Eigen::Vector3d hc = 0.5 * (P[head] + P[head_end]);  // middle of the head
     auto on_head = [&](const Eigen::Vector3d& off) { return Eigen::Vector3d(hc + R[head] * off); };
-    auto on_foot = [&](int j, const Eigen::Vector3d& off) { return Eigen::Vector3d(P[j] + R[j] * off); };
+    auto on_joint = [&](int j, const Eigen::Vector3d& off) { return Eigen::Vector3d(P[j] + R[j] * off); };
     std::vector<Eigen::Vector3d> k(25);
     k[0] = on_head(0.10 * F);                                 // Nose
     k[1] = 0.5 * (P[rs] + P[ls]);                             // Neck: OpenPose puts it between the shoulders
@@ -99,10 +99,13 @@ Motion load_cmu_motion(const std::string& path, size_t first, size_t count, size
     k[17] = on_head(-0.075 * L);                              // REar
     k[18] = on_head(0.075 * L);                               // LEar
     std::tie(k[19], k[20]) = toes(la, lt, l_toe, 0.05 * L - 0.02 * F);   // LBigToe, LSmallToe
-    k[21] = on_foot(la, -0.06 * F - 0.06 * U);                // LHeel
+    k[21] = on_joint(la, -0.06 * F - 0.06 * U);                // LHeel
     std::tie(k[22], k[23]) = toes(ra, rt, r_toe, -0.05 * L - 0.02 * F);  // RBigToe, RSmallToe
-    k[24] = on_foot(ra, -0.06 * F - 0.06 * U);                // RHeel
+    k[24] = on_joint(ra, -0.06 * F - 0.06 * U);                // RHeel
     m.frames.push_back(std::move(k));
+    // Knuckles 9 cm out along the hand, index in front of the little finger (palm down at rest).
+    m.knuckles.push_back({on_joint(rw, -0.09 * L + 0.035 * F), on_joint(rw, -0.08 * L - 0.035 * F),
+                          on_joint(lw, 0.09 * L + 0.035 * F), on_joint(lw, 0.08 * L - 0.035 * F)});
   }
   // Centre the take on the origin, feet on the floor.
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
@@ -113,6 +116,8 @@ Motion load_cmu_motion(const std::string& path, size_t first, size_t count, size
   }
   mean /= static_cast<double>(m.frames.size());
   for (auto& fr : m.frames)
+    for (auto& p : fr) p -= Eigen::Vector3d(mean.x(), floor, mean.z());
+  for (auto& fr : m.knuckles)
     for (auto& p : fr) p -= Eigen::Vector3d(mean.x(), floor, mean.z());
   return m;
 }
@@ -129,6 +134,20 @@ std::vector<Eigen::Vector3d> to_layout(const std::vector<Eigen::Vector3d>& body2
     if (n == "Head") p = 0.5 * (body25[17] + body25[18]) + Eigen::Vector3d(0, 0.08, 0);
     if (n == "Hip") p = body25[8];
     out.push_back(p);
+  }
+  return out;
+}
+
+std::vector<Eigen::Vector3d> to_layout(const Motion& motion, size_t n, LayoutId id) {
+  std::vector<Eigen::Vector3d> out = to_layout(motion.frames[n], id);
+  const KeypointLayout& dst = layout(id);
+  const char* const knuckle_names[4] = {"RIndex", "RPinky", "LIndex", "LPinky"};
+  for (size_t k = 0; k < dst.keypoints.size(); ++k) {
+    const std::string name = dst.keypoints[k];
+    for (int i = 0; i < 4; ++i)
+      if (n < motion.knuckles.size() && name == knuckle_names[i]) out[k] = motion.knuckles[n][i];
+    if (name == "RFootIndex") out[k] = motion.frames[n][22];  // the big toe
+    if (name == "LFootIndex") out[k] = motion.frames[n][19];
   }
   return out;
 }

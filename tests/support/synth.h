@@ -1,6 +1,7 @@
 // Ground truth the tests make: cameras with distortion around a volume, real human motion (CMU mocap,
 // Debian's assimp-testmodels) turned into keypoints, projected with noise, gaps and wrong detections.
 #pragma once
+#include <array>
 #include <Eigen/Core>
 #include <random>
 #include <string>
@@ -27,6 +28,8 @@ Calibration make_camera_ring(const RigOptions& options);
 struct Motion {
   std::vector<std::vector<Eigen::Vector3d>> frames;
   double rate_hz = 30;
+  // Per frame, the hands' knuckles (BLAZEPOSE_33's RIndex, RPinky, LIndex, LPinky), rigid on the hands' frames.
+  std::vector<std::array<Eigen::Vector3d, 4>> knuckles;
 };
 std::string default_bvh_path();  // CMU subject 1, trial 1
 // Frames [first, first + count*step) of a CMU BVH, every `step`-th, as BODY_25 keypoints.
@@ -35,6 +38,8 @@ Motion load_cmu_motion(const std::string& bvh_path, size_t first, size_t count, 
 // BODY_25 keypoints -> another layout by keypoint name (NaN where the layout has a point BODY_25 lacks:
 // BODY_25B/HALPE "Head" is made from the ears and nose instead).
 std::vector<Eigen::Vector3d> to_layout(const std::vector<Eigen::Vector3d>& body25, LayoutId layout);
+// Frame `n` of a motion in another layout, its knuckles included (BLAZEPOSE_33's foot index is the big toe).
+std::vector<Eigen::Vector3d> to_layout(const Motion& motion, size_t n, LayoutId layout);
 
 struct NoiseOptions {
   double pixel_sigma = 1.0;   // Gaussian detection noise, px
