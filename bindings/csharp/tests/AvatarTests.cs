@@ -77,6 +77,42 @@ namespace Octocap.Tests
             };
         }
 
+        /// <summary>A chest twisted 60 degrees against still hips, on an avatar with Chest and UpperChest: Spine,
+        /// Chest and UpperChest turn 20, 40 and 60 degrees (world), on top of their own rest; the neck keeps its own
+        /// rotation; without the extra bones Spine takes all of it.</summary>
+        static Quat Turn(double degrees) => QuatMath.FromAxisAngle(0, 1, 0, (float)(degrees * Math.PI / 180));
+
+        [Test]
+        public void ChestTwistIsSpreadOverTheAvatarsSpineBones()
+        {
+            var rest = new Quat[(int)BoneId.Count];
+            for (int b = 0; b < rest.Length; ++b) rest[b] = QuatMath.FromAxisAngle(1, 0, 0, 0.05f * b);
+            var bones = new BonePose[(int)BoneId.Count];
+            for (int b = 0; b < bones.Length; ++b) { bones[b].GlobalRotation = QuatMath.Identity; bones[b].Valid = 1; }
+            Quat twist = QuatMath.FromAxisAngle(0, 1, 0, (float)(Math.PI / 3));
+            bones[(int)BoneId.Torso].GlobalRotation = twist;
+            bones[(int)BoneId.Head].GlobalRotation = twist;
+            Quat chestRest = QuatMath.FromAxisAngle(0, 0, 1, 0.3f), upperRest = QuatMath.FromAxisAngle(0, 0, 1, -0.2f);
+
+            var spread = new AvatarRetargeter();
+            spread.CalibrateTPose(rest, null);
+            spread.CalibrateSpine(new[] { chestRest, upperRest });
+            Quat[] world = spread.Update(bones);
+            Assert.Less(QuatMath.Angle(world[(int)BoneId.Torso], QuatMath.Multiply(Turn(20), rest[(int)BoneId.Torso])), 1e-4);
+            Assert.Less(QuatMath.Angle(spread.SpineOutput[0], QuatMath.Multiply(Turn(40), chestRest)), 1e-4);
+            Assert.Less(QuatMath.Angle(spread.SpineOutput[1], QuatMath.Multiply(Turn(60), upperRest)), 1e-4);
+            Assert.Less(QuatMath.Angle(world[(int)BoneId.Head], QuatMath.Multiply(twist, rest[(int)BoneId.Head])), 1e-4);
+
+            var single = new AvatarRetargeter();
+            single.CalibrateTPose(rest, null);
+            Assert.Less(QuatMath.Angle(single.Update(bones)[(int)BoneId.Torso], QuatMath.Multiply(twist, rest[(int)BoneId.Torso])), 1e-4);
+
+            // The torso lost for a frame: the spine bones hold where they were against Spine.
+            bones[(int)BoneId.Torso].Valid = 0;
+            world = spread.Update(bones);
+            Assert.Less(QuatMath.Angle(spread.SpineOutput[1], QuatMath.Multiply(Turn(60), upperRest)), 1e-4);
+        }
+
         [Test]
         public void RetargeterAppliesRotationsOnTopOfTheAvatarsRest()
         {

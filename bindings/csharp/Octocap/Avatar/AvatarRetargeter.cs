@@ -10,6 +10,9 @@ namespace Octocap.Avatar
     /// Optional smoothing blends each frame toward the target. A bone octocap could not solve keeps its last rotation
     /// relative to its parent (its T-pose one if it was never solved: the feet of a layout without feet), so it
     /// follows the body instead of snapping to the T-pose or staying put in the world.
+    /// octocap's torso is one bone from the hips to the neck; an avatar with more spine bones (Unity's and Godot's
+    /// Chest and UpperChest) gets the torso's rotation against the hips spread evenly over Spine and those
+    /// (<see cref="CalibrateSpine"/>), so that a twisting chest turns along the back, not at its lowest joint.
     /// </summary>
     public sealed class AvatarRetargeter
     {
@@ -19,6 +22,9 @@ namespace Octocap.Avatar
         readonly Quat[] _local = new Quat[(int)BoneId.Count];  // last output relative to the parent's
         static readonly int[] Parents = ParentTable();
         bool _calibrated;
+        Quat[] _spineRest = new Quat[0];   // T-pose world rotations of the spine bones above Spine, hips up
+        Quat[] _spineOutput = new Quat[0];
+        Quat[] _spineLocal = new Quat[0];  // last output relative to the torso's
 
         static int[] ParentTable()
         {
@@ -51,6 +57,28 @@ namespace Octocap.Avatar
             _calibrated = true;
         }
 
+        /// <summary>The avatar's spine bones between Spine (octocap's torso) and the neck, hips up (Unity: Chest,
+        /// UpperChest; whichever it has), with their T-pose world rotations; call after <see cref="CalibrateTPose"/>.
+        /// None (the default): Spine takes the whole torso rotation.</summary>
+        public void CalibrateSpine(Quat[] tposeWorldRotations)
+        {
+            if (!_calibrated) throw new InvalidOperationException("call CalibrateTPose first");
+            int n = tposeWorldRotations == null ? 0 : tposeWorldRotations.Length;
+            _spineRest = new Quat[n];
+            _spineOutput = new Quat[n];
+            _spineLocal = new Quat[n];
+            for (int i = 0; i < n; ++i)
+            {
+                _spineRest[i] = QuatMath.Normalize(tposeWorldRotations[i]);
+                _spineOutput[i] = _spineRest[i];
+                _spineLocal[i] = QuatMath.Multiply(QuatMath.Conjugate(_rest[(int)BoneId.Torso]), _spineRest[i]);
+            }
+        }
+
+        /// <summary>World rotations of the spine bones given to <see cref="CalibrateSpine"/>, after each
+        /// <see cref="Update"/>.</summary>
+        public Quat[] SpineOutput => _spineOutput;
+
         /// <summary>World rotation per avatar bone for this frame. <paramref name="bones"/> must be in the
         /// engine's frame (Session.GetBones with CoordFrame.Unity or Godot).</summary>
         public Quat[] Update(ReadOnlySpan<BonePose> bones)
@@ -66,11 +94,41 @@ namespace Octocap.Avatar
                     if (p >= 0 && _has[p]) _output[b] = QuatMath.Normalize(QuatMath.Multiply(_output[p], _local[b]));
                     continue;
                 }
-                Quat target = QuatMath.Normalize(QuatMath.Multiply(bones[b].GlobalRotation, _rest[b]));
+                Quat target = QuatMath.Normalize(QuatMath.Multiply(Spread(bones, b, 0), _rest[b]));
                 _output[b] = Smoothing > 0 ? QuatMath.Slerp(_output[b], target, 1f - Smoothing) : target;
                 _local[b] = RelativeToParent(_output, b);
             }
+            UpdateSpine(bones);
             return _output;
+        }
+
+        // The rotation octocap gives bone b; for the torso with more spine bones, its share `step` (0: Spine) of the
+        // turn from the hips: the hips' rotation and (step + 1) / (spine bones) of the torso's against it.
+        Quat Spread(ReadOnlySpan<BonePose> bones, int b, int step)
+        {
+            const int torso = (int)BoneId.Torso, root = (int)BoneId.Root;
+            if (b != torso || _spineRest.Length == 0 || bones[root].Valid == 0) return bones[b].GlobalRotation;
+            Quat hips = bones[root].GlobalRotation;
+            Quat local = QuatMath.Multiply(QuatMath.Conjugate(hips), bones[torso].GlobalRotation);
+            float share = (step + 1f) / (_spineRest.Length + 1f);
+            return QuatMath.Multiply(hips, QuatMath.Slerp(QuatMath.Identity, local, share));
+        }
+
+        void UpdateSpine(ReadOnlySpan<BonePose> bones)
+        {
+            const int torso = (int)BoneId.Torso;
+            bool solved = _has[torso] && torso < bones.Length && bones[torso].Valid != 0;
+            for (int i = 0; i < _spineRest.Length; ++i)
+            {
+                if (!solved)
+                {
+                    _spineOutput[i] = QuatMath.Normalize(QuatMath.Multiply(_output[torso], _spineLocal[i]));  // held
+                    continue;
+                }
+                Quat target = QuatMath.Normalize(QuatMath.Multiply(Spread(bones, torso, i + 1), _spineRest[i]));
+                _spineOutput[i] = Smoothing > 0 ? QuatMath.Slerp(_spineOutput[i], target, 1f - Smoothing) : target;
+                _spineLocal[i] = QuatMath.Multiply(QuatMath.Conjugate(_output[torso]), _spineOutput[i]);
+            }
         }
 
         public bool Drives(BoneId bone) => _has[(int)bone];

@@ -26,6 +26,7 @@ public sealed class OctocapAvatarDriver : MonoBehaviour
     readonly AvatarRetargeter _retargeter = new AvatarRetargeter();
     readonly BonePose[] _bones = new BonePose[(int)BoneId.Count];
     Transform[] _targets;
+    Transform[] _spine;  // Chest, UpperChest: whichever the avatar has; octocap's torso is spread over them and Spine
 
     void Awake()
     {
@@ -37,6 +38,10 @@ public sealed class OctocapAvatarDriver : MonoBehaviour
             var hb = (HumanBodyBones)Enum.Parse(typeof(HumanBodyBones), BoneNames.UnityHumanBodyBones[b]);
             _targets[b] = animator.GetBoneTransform(hb);
         }
+        var spine = new System.Collections.Generic.List<Transform>();
+        foreach (var hb in new[] { HumanBodyBones.Chest, HumanBodyBones.UpperChest })
+            if (animator.GetBoneTransform(hb) != null) spine.Add(animator.GetBoneTransform(hb));
+        _spine = spine.ToArray();
     }
 
     /// <summary>Call with the avatar standing in a T-pose (arms out, facing +Z).</summary>
@@ -51,6 +56,9 @@ public sealed class OctocapAvatarDriver : MonoBehaviour
             rest[b] = present[b] ? ToOctocap(_targets[b].rotation) : QuatMath.Identity;
         }
         _retargeter.CalibrateTPose(rest, present);
+        var spineRest = new Quat[_spine.Length];
+        for (int i = 0; i < _spine.Length; ++i) spineRest[i] = ToOctocap(_spine[i].rotation);
+        _retargeter.CalibrateSpine(spineRest);
     }
 
     void LateUpdate()
@@ -59,8 +67,13 @@ public sealed class OctocapAvatarDriver : MonoBehaviour
         if (!FrameReader.TryReadBones(Source, bindBy, person, CoordFrame.Unity, _bones)) return;  // nobody yet: hold the pose
         _retargeter.Smoothing = smoothing;
         Quat[] world = _retargeter.Update(_bones);
+        // Parents before children: Spine, then the chest bones above it, then the neck and shoulders.
         for (int b = 0; b < _targets.Length; ++b)
+        {
             if (_targets[b] != null && _retargeter.Drives((BoneId)b)) _targets[b].rotation = ToUnity(world[b]);
+            if (b == (int)BoneId.Torso)
+                for (int i = 0; i < _spine.Length; ++i) _spine[i].rotation = ToUnity(_retargeter.SpineOutput[i]);
+        }
         BonePose root = _bones[(int)BoneId.Root];
         if (driveRootPosition && root.Valid != 0 && _targets[0] != null)
             _targets[0].position = new Vector3(root.HeadPosition.X, root.HeadPosition.Y, root.HeadPosition.Z) + rootOffset;

@@ -24,6 +24,7 @@ public partial class OctocapSkeletonDriver : Node3D
     readonly BonePose[] _bones = new BonePose[(int)BoneId.Count];
     Skeleton3D _skeleton;
     int[] _index;
+    int[] _spine;  // Chest, UpperChest: whichever the skeleton has; octocap's torso is spread over them and Spine
 
     public override void _Ready()
     {
@@ -35,6 +36,10 @@ public partial class OctocapSkeletonDriver : Node3D
             string name = b < BoneNameOverrides.Length && BoneNameOverrides[b] != "" ? BoneNameOverrides[b] : BoneNames.GodotHumanoid[b];
             _index[b] = _skeleton.FindBone(name);
         }
+        var spine = new System.Collections.Generic.List<int>();
+        foreach (string name in new[] { "Chest", "UpperChest" })
+            if (_skeleton.FindBone(name) >= 0) spine.Add(_skeleton.FindBone(name));
+        _spine = spine.ToArray();
     }
 
     /// <summary>Call with the skeleton in its T-pose.</summary>
@@ -48,6 +53,10 @@ public partial class OctocapSkeletonDriver : Node3D
             rest[b] = present[b] ? ToOctocap(_skeleton.GetBoneGlobalPose(_index[b]).Basis.GetRotationQuaternion()) : QuatMath.Identity;
         }
         _retargeter.CalibrateTPose(rest, present);
+        var spineRest = new Quat[_spine.Length];
+        for (int i = 0; i < _spine.Length; ++i)
+            spineRest[i] = ToOctocap(_skeleton.GetBoneGlobalPose(_spine[i]).Basis.GetRotationQuaternion());
+        _retargeter.CalibrateSpine(spineRest);
     }
 
     public override void _Process(double delta)
@@ -59,11 +68,17 @@ public partial class OctocapSkeletonDriver : Node3D
         // Parents come before children in BoneId order, so each parent's new global pose is already set.
         for (int b = 0; b < _index.Length; ++b)
         {
-            if (_index[b] < 0 || !_retargeter.Drives((BoneId)b)) continue;
-            int parent = _skeleton.GetBoneParent(_index[b]);
-            Quaternion parentGlobal = parent >= 0 ? _skeleton.GetBoneGlobalPose(parent).Basis.GetRotationQuaternion() : Quaternion.Identity;
-            _skeleton.SetBonePoseRotation(_index[b], parentGlobal.Inverse() * ToGodot(world[b]));
+            if (_index[b] >= 0 && _retargeter.Drives((BoneId)b)) SetGlobalRotation(_index[b], world[b]);
+            if (b == (int)BoneId.Torso)  // the chest bones above Spine, before the neck and shoulders that hang off them
+                for (int i = 0; i < _spine.Length; ++i) SetGlobalRotation(_spine[i], _retargeter.SpineOutput[i]);
         }
+    }
+
+    void SetGlobalRotation(int bone, Quat world)
+    {
+        int parent = _skeleton.GetBoneParent(bone);
+        Quaternion parentGlobal = parent >= 0 ? _skeleton.GetBoneGlobalPose(parent).Basis.GetRotationQuaternion() : Quaternion.Identity;
+        _skeleton.SetBonePoseRotation(bone, parentGlobal.Inverse() * ToGodot(world));
     }
 
     static Quaternion ToGodot(Quat q) => new Quaternion(q.X, q.Y, q.Z, q.W);
