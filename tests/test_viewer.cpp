@@ -60,6 +60,33 @@ SkinnedVertices skin(const Character& c, const Eigen::Quaternionf& elbow_rotatio
   return out;
 }
 
+// The sample's first camera at half its size, and plain pinhole projection through it (independent of the GL matrices).
+struct SampleCamera {
+  Eigen::Matrix3d Ks, R;
+  Eigen::Vector3d t;
+  int w = 0, h = 0;
+  Eigen::Vector2d project(const Eigen::Vector3f& p) const {
+    const Eigen::Vector3d c = R * p.cast<double>() + t;
+    return {Ks(0, 0) * c.x() / c.z() + Ks(0, 2), Ks(1, 1) * c.y() / c.z() + Ks(1, 2)};
+  }
+};
+
+SampleCamera sample_camera() {
+  octocap_calibration_t* calib = nullptr;
+  REQUIRE(octocap_calibration_load((kSample + "/calibration.toml").c_str(), &calib) == OCTOCAP_OK);
+  octocap_camera_t cam;
+  REQUIRE(octocap_calibration_get_camera(calib, 0, &cam) == OCTOCAP_OK);
+  octocap_calibration_destroy(calib);
+  SampleCamera s;
+  for (int k = 0; k < 9; ++k) s.Ks(k / 3, k % 3) = cam.matrix[k];
+  s.Ks.topRows<2>() *= 0.5;
+  const Eigen::Vector3d r(cam.rotation[0], cam.rotation[1], cam.rotation[2]);
+  s.R = Eigen::AngleAxisd(r.norm(), r.normalized()).toRotationMatrix();
+  s.t = Eigen::Vector3d(cam.translation[0], cam.translation[1], cam.translation[2]);
+  s.w = static_cast<int>(cam.width) / 2, s.h = static_cast<int>(cam.height) / 2;
+  return s;
+}
+
 void check_near(const Eigen::Vector3f& got, const Eigen::Vector3f& want, float tolerance = 1e-5f) {
   INFO("got " << got.transpose() << ", want " << want.transpose());
   CHECK((got - want).norm() < tolerance);
@@ -173,19 +200,10 @@ TEST_CASE("retargeting onto a model in an A-pose, turned and with odd rest frame
 }
 
 TEST_CASE("the headless renderer draws the character around its own joints, and a new pose changes the picture") {
-  octocap_calibration_t* calib = nullptr;
-  REQUIRE(octocap_calibration_load((kSample + "/calibration.toml").c_str(), &calib) == OCTOCAP_OK);
-  octocap_camera_t cam;
-  REQUIRE(octocap_calibration_get_camera(calib, 0, &cam) == OCTOCAP_OK);
-  octocap_calibration_destroy(calib);
-  Eigen::Matrix3d K;
-  for (int k = 0; k < 9; ++k) K(k / 3, k % 3) = cam.matrix[k];
-  const Eigen::Vector3d r(cam.rotation[0], cam.rotation[1], cam.rotation[2]);
-  const Eigen::Matrix3d R = Eigen::AngleAxisd(r.norm(), r.normalized()).toRotationMatrix();
-  const Eigen::Vector3d t(cam.translation[0], cam.translation[1], cam.translation[2]);
-  const int w = static_cast<int>(cam.width) / 2, h = static_cast<int>(cam.height) / 2;
-  Eigen::Matrix3d Ks = K;
-  Ks.topRows<2>() *= 0.5;
+  const SampleCamera cam = sample_camera();
+  const int w = cam.w, h = cam.h;
+  const Eigen::Matrix3d &Ks = cam.Ks, &R = cam.R;
+  const Eigen::Vector3d& t = cam.t;
 
   Scene scene(kSample + "/ground_truth.csv", SceneOptions{});  // the sample world is Y up
   OffscreenContext context(w, h);
@@ -215,8 +233,8 @@ TEST_CASE("the headless renderer draws the character around its own joints, and 
     const Eigen::Vector3f& j = joints0[k];
     if (k == OCTOCAP_JOINT_R_HEEL || k == OCTOCAP_JOINT_L_HEEL) continue;  // no model bone ends at a heel
     REQUIRE(j.allFinite());
-    const Eigen::Vector3d c = R * j.cast<double>() + t;
-    const double u = Ks(0, 0) * c.x() / c.z() + Ks(0, 2), v = Ks(1, 1) * c.y() / c.z() + Ks(1, 2);
+    const Eigen::Vector2d uv = cam.project(j);
+    const double u = uv.x(), v = uv.y();
     INFO("joint at " << u << ", " << v << "; silhouette box " << x0 << ".." << x1 << " x " << y0 << ".." << y1);
     CHECK(u >= x0 - 2);
     CHECK(u <= x1 + 2);
@@ -227,6 +245,65 @@ TEST_CASE("the headless renderer draws the character around its own joints, and 
   for (size_t i = 0; i < first.size(); i += 3) changed += first[i] != later[i] || first[i + 1] != later[i + 1];
   CHECK(changed > static_cast<size_t>(body) / 5);
   CHECK((joints0[OCTOCAP_JOINT_L_HAND] - joints1[OCTOCAP_JOINT_L_HAND]).norm() > 0.05f);
+}
+
+TEST_CASE("the default character with a turned head, then flexed feet, changes the picture there and only there") {
+  const SampleCamera cam = sample_camera();
+  Scene scene(kSample + "/ground_truth.csv", SceneOptions{});
+  OffscreenContext context(cam.w, cam.h);
+  Renderer renderer(context.gl(), scene.meshes());
+  const ViewCamera view = calibrated_camera(cam.Ks, cam.R, cam.t, Eigen::Matrix3d::Identity(), cam.w, cam.h);
+  octocap_motion_t* motion = nullptr;
+  REQUIRE(octocap_motion_open((kSample + "/ground_truth.csv").c_str(), &motion) == OCTOCAP_OK);
+  std::array<octocap_bone_pose_t, OCTOCAP_BONE_COUNT> bones{};
+  uint32_t n = 0;
+  REQUIRE(octocap_motion_bones(motion, 0, OCTOCAP_FRAME_RIG, bones.data(), OCTOCAP_BONE_COUNT, &n) == OCTOCAP_OK);
+  octocap_motion_destroy(motion);
+  REQUIRE(bones[OCTOCAP_BONE_HEAD].valid);
+  REQUIRE(bones[OCTOCAP_BONE_R_FOOT].valid);
+  REQUIRE(bones[OCTOCAP_BONE_L_FOOT].valid);
+  auto render = [&](const std::array<octocap_bone_pose_t, OCTOCAP_BONE_COUNT>& pose) {
+    scene.pose(pose.data());
+    renderer.draw(view, scene.vertices(), scene.placement(), {}, false, scene.floor_y());
+    return context.read_rgb();
+  };
+  // A bone turned by `q` in the world (rig frame), everything else as it was.
+  auto turned = [&](std::initializer_list<int> which, const Eigen::Quaterniond& q) {
+    std::array<octocap_bone_pose_t, OCTOCAP_BONE_COUNT> pose = bones;
+    for (int b : which) {
+      octocap_quat_t& g = pose[b].global_rotation;
+      const Eigen::Quaterniond now = (q * Eigen::Quaterniond(g.w, g.x, g.y, g.z)).normalized();
+      g = {static_cast<float>(now.x()), static_cast<float>(now.y()), static_cast<float>(now.z()), static_cast<float>(now.w())};
+    }
+    return pose;
+  };
+  const std::vector<uint8_t> base = render(bones);
+  const auto joints = scene.character_joints();
+  const double neck_v = cam.project(joints[OCTOCAP_JOINT_NECK]).y(), root_v = cam.project(joints[OCTOCAP_JOINT_ROOT]).y();
+  const double knee_v = std::min(cam.project(joints[OCTOCAP_JOINT_R_KNEE]).y(), cam.project(joints[OCTOCAP_JOINT_L_KNEE]).y());
+  REQUIRE(neck_v < root_v);  // image rows grow downward: the neck is above the hips
+  // Rows of the pixels that changed against the base picture.
+  auto changed_rows = [&](const std::vector<uint8_t>& picture) {
+    std::vector<int> rows;
+    for (size_t i = 0; i < picture.size(); i += 3)
+      if (std::abs(picture[i] - base[i]) + std::abs(picture[i + 1] - base[i + 1]) + std::abs(picture[i + 2] - base[i + 2]) > 24)
+        rows.push_back(static_cast<int>(i / 3) / cam.w);
+    return rows;
+  };
+  // The head turned 70 degrees to the side: pixels change around the head, none below the chest.
+  const std::vector<int> head = changed_rows(render(turned({OCTOCAP_BONE_HEAD}, Eigen::Quaterniond(Eigen::AngleAxisd(70 * M_PI / 180, Eigen::Vector3d::UnitY())))));
+  const double chest_v = neck_v + 0.3 * (root_v - neck_v);
+  INFO("head turned: " << head.size() << " pixels changed, lowest row " << (head.empty() ? -1 : *std::max_element(head.begin(), head.end()))
+                       << "; neck at row " << neck_v << ", chest " << chest_v);
+  CHECK(head.size() > 30);
+  CHECK(std::count_if(head.begin(), head.end(), [&](int v) { return v <= chest_v; }) == static_cast<std::ptrdiff_t>(head.size()));
+  // Both feet flexed 35 degrees (toes up, about the body's left-right axis): pixels change below the knees only.
+  const Eigen::Quaterniond flex(Eigen::AngleAxisd(-35 * M_PI / 180, Eigen::Vector3d::UnitX()));
+  const std::vector<int> feet = changed_rows(render(turned({OCTOCAP_BONE_R_FOOT, OCTOCAP_BONE_L_FOOT}, flex)));
+  INFO("feet flexed: " << feet.size() << " pixels changed, highest row " << (feet.empty() ? -1 : *std::min_element(feet.begin(), feet.end()))
+                       << "; knees at row " << knee_v);
+  CHECK(feet.size() > 30);
+  CHECK(std::count_if(feet.begin(), feet.end(), [&](int v) { return v >= knee_v; }) == static_cast<std::ptrdiff_t>(feet.size()));
 }
 
 TEST_CASE("octocap-viewer writes one PNG per frame, from calibrated cameras too, and opens a window under Xvfb") {

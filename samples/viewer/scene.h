@@ -42,6 +42,9 @@ class Scene {
   int frame_count() const { return static_cast<int>(frames_); }
   double rate_hz() const { return rate_hz_; }
   void pose(int frame);
+  // The first figure in a pose given bone by bone (OCTOCAP_BONE_COUNT of them, rig frame): a motion's frame changed
+  // by hand, a pose from elsewhere.
+  void pose(const octocap_bone_pose_t* bones) { pose_bones(figures_.at(0), bones); }
   // Live: waits up to timeout_ms for the next pose and applies it; false when none came.
   bool take_live(int timeout_ms);
   bool live() const { return live_ != nullptr; }
