@@ -226,19 +226,35 @@ void frame_queries(octocap_calibration_t* calib, const Frames& frames) {
 // The rig stage alone (stage 4: joints -> bone rotations with their rolls), per person and frame: with feet (BODY_25's
 // toes and heels: 15 bones) and without (COCO_17: 13 bones, the feet invalid), to set beside the 3D stage's ms.
 void rig_stage(const synth::Motion& motion) {
-  std::printf("\nRig stage (joints -> %d bone rotations, hinge/torso/face/foot rolls), us per person-frame:\n", kBoneCount);
-  for (LayoutId lid : {LayoutId::body25, LayoutId::coco17}) {
+  std::printf("\nRig stage (joints -> %d bone rotations, hinge/torso/face/foot/palm rolls), us per person-frame:\n", kBoneCount);
+  for (LayoutId lid : {LayoutId::blazepose33, LayoutId::body25, LayoutId::coco17}) {
+    const KeypointLayout& l = layout(lid);
+    auto index = [&](const char* name) {
+      for (size_t k = 0; k < l.keypoints.size(); ++k)
+        if (std::string(l.keypoints[k]) == name) return static_cast<int>(k);
+      return -1;
+    };
     std::vector<SkeletonJoints> joints;
-    for (const auto& f : motion.frames) joints.push_back(testing::skeleton_from_keypoints(synth::to_layout(f, lid), lid));
+    std::vector<BodyCues> cues;  // the face's and the palms' across lines, as the session gives them
+    for (size_t n = 0; n < motion.frames.size(); ++n) {
+      const std::vector<Eigen::Vector3d> kp = synth::to_layout(motion, n, lid);
+      joints.push_back(testing::skeleton_from_keypoints(kp, lid));
+      auto at = [&](const char* name) { return index(name) < 0 ? Eigen::Vector3d::Constant(NAN) : kp[index(name)]; };
+      BodyCues c;
+      c.head_across = at("LEar") - at("REar");
+      c.r_palm_across = at("RIndex") - at("RPinky");
+      c.l_palm_across = at("LIndex") - at("LPinky");
+      cues.push_back(c);
+    }
     BoneSolver solver;
     double sink = 0;
     const int rounds = 50;
     const auto t0 = Clock::now();
     for (int r = 0; r < rounds; ++r)
-      for (const auto& j : joints) sink += solver.solve(j)[kBoneRoot].length;
+      for (size_t i = 0; i < joints.size(); ++i) sink += solver.solve(joints[i], cues[i])[kBoneRoot].length;
     const double us = std::chrono::duration<double, std::micro>(Clock::now() - t0).count() / (rounds * joints.size());
-    std::printf("  %-8s (%s): %.2f us%s\n", layout(lid).name, lid == LayoutId::coco17 ? "no feet" : "feet", us,
-                sink > 0 ? "" : " ");
+    const char* what = lid == LayoutId::coco17 ? "no feet, no hands" : lid == LayoutId::body25 ? "feet" : "feet and hands";
+    std::printf("  %-12s (%s): %.2f us%s\n", l.name, what, us, sink > 0 ? "" : " ");
   }
 }
 
