@@ -263,6 +263,26 @@ TEST_CASE("a palm turns: the hand rolls with its knuckles' line, the forearm's t
   CHECK(pose[kBoneRLowerArm].valid);
 }
 
+TEST_CASE("a chest twisting against still hips: the torso turns with the shoulder line, the hips do not", "[rig]") {
+  const SkeletonJoints rest = tpose();
+  const Eigen::Vector3d up = tpose_directions()[kBoneTorso];
+  BoneSolver solver;
+  for (double twist : {0.0, 15.0, 30.0, 45.0, 60.0, 30.0, -40.0}) {
+    // Shoulders, arms and hands (and the hand points) turned about the spine through the neck; hips and legs still.
+    const Eigen::AngleAxisd turn(twist * M_PI / 180, up);
+    SkeletonJoints j = rest;
+    for (int k : {kRShoulder, kRElbow, kRHand, kRKnuckles, kLShoulder, kLElbow, kLHand, kLKnuckles})
+      j[k] = rest[kNeck] + turn * (rest[k] - rest[kNeck]);
+    const SkeletonPose pose = solver.solve(j);
+    INFO("chest twisted " << twist << " deg");
+    CHECK(angle_between(pose[kBoneRoot].global, Eigen::Quaterniond::Identity()) < 1e-9);
+    CHECK(std::abs(twist_angle(pose[kBoneTorso].local, up) * 180 / M_PI - twist) < 1e-6);
+    // The arms turned with the chest: nothing of their own.
+    for (int b : {kBoneRShoulder, kBoneRUpperArm, kBoneRLowerArm, kBoneLShoulder, kBoneLUpperArm, kBoneLLowerArm})
+      CHECK(angle_between(pose[b].local, Eigen::Quaterniond::Identity()) < 1e-6);
+  }
+}
+
 TEST_CASE("a missing joint invalidates its bone and the bones below it", "[rig]") {
   SkeletonJoints j = tpose();
   j[kLElbow] = Eigen::Vector3d::Constant(std::nan(""));
