@@ -10,8 +10,13 @@
 #include <dlfcn.h>
 #include <sys/stat.h>
 
+#if defined(__x86_64__) || defined(__i386__)
+#include <cpuid.h>
+#endif
+
 #include "core/error.h"
 #include "core/layout.h"
+#include "core/log.h"
 #include "core/stats.h"
 #include "detect/ort_model.h"
 #include "detect/turned_crop.h"
@@ -70,6 +75,18 @@ bool same_person(const Person2D& a, const Person2D& b, double min_confidence) {
 
 }  // namespace
 
+bool cpu_has_vnni() {
+#if defined(__x86_64__) || defined(__i386__)
+  unsigned a = 0, b = 0, c = 0, d = 0;
+  if (!__get_cpuid_count(7, 0, &a, &b, &c, &d)) return false;
+  if (c & (1u << 11)) return true;  // AVX512_VNNI
+  if (!__get_cpuid_count(7, 1, &a, &b, &c, &d)) return false;
+  return (a & (1u << 4)) != 0;      // AVX_VNNI
+#else
+  return false;  // other CPUs: ONNX Runtime's integer kernels there are not what the INT8 model was measured on
+#endif
+}
+
 std::string models_directory() {
   const char* env = std::getenv("OCTOCAP_MODELS_DIR");
   if (env && *env) return env;
@@ -99,6 +116,9 @@ Detector::Detector(const DetectorConfig& config) : config_(config) {
   if (config.max_people == 0) throw Error(Errc::invalid_argument, "max people per view must be at least 1");
   path_ = resolve_model_path(config.model, config.mode);
   card_ = read_model_card(model_card_path(path_));
+  if (card_.quantized && !cpu_has_vnni())
+    log(LogLevel::warning, "model " + card_.name + " is quantised to INT8, and this CPU has no VNNI: here it runs "
+                           "hardly faster and less accurately than the float model it was made from");
   if (config.mode == DetectMode::mosaic && (card_.max_people < 2 || !card_.dynamic_size))
     throw Error(Errc::invalid_argument, "the mosaic needs a multi-person model that accepts any input size (one "
                                         "person per tile); " + card_.name + " is not one: use movenet-multipose");

@@ -41,6 +41,11 @@ struct DetectTimings {
   int inferences = 0;
 };
 
+// Whether this CPU has VNNI (AVX-512 VNNI or AVX-VNNI): the integer dot products INT8 models need to be fast; without
+// them ONNX Runtime's U8S8 kernels can saturate (measured on an AVX2-only CPU: INT8 Thunder 42 mm from Pose2Sim's 3D
+// where the float model is 35, and hardly faster).
+bool cpu_has_vnni();
+
 // Where shipped models live: $OCTOCAP_MODELS_DIR, else the directory the build was configured with.
 std::string models_directory();
 // The .onnx a config names (a path, or a name looked up in models_directory()).

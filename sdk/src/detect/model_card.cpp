@@ -84,6 +84,7 @@ ModelCard read_model_card(const std::string& path) {
     card.input_height = positive_int(input, "height", in_where);
     card.dynamic_size = input.value("dynamic_size", false);
     card.upright = input.value("upright", false);
+    card.quantized = doc.value("quantized", false);
     card.size_multiple = input.contains("size_multiple") ? positive_int(input, "size_multiple", in_where) : 1;
     card.element = choice<ElementType>(input, "element_type", in_where,
                                        {{"int32", ElementType::int32}, {"uint8", ElementType::uint8}, {"float32", ElementType::float32}});

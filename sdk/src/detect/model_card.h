@@ -21,6 +21,7 @@ struct ModelCard {
   bool nchw = false;
   bool bgr = false;
   bool upright = false;  // the model wants the body upright in its input: crops turn with the person
+  bool quantized = false;  // INT8 weights and activations: fast and accurate only where the CPU has VNNI
   std::array<float, 3> mean{0, 0, 0}, scale{1, 1, 1};
   OutputKind output = OutputKind::movenet;
   int max_people = 1;
