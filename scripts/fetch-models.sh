@@ -17,7 +17,7 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 DEST="${OCTOCAP_MODELS_DIR:-$ROOT/.cache/models}"
 TOOLS="$ROOT/.cache/model-tools"
-MARKER="$DEST/.complete-3"
+MARKER="$DEST/.complete-4"
 if [ -f "$MARKER" ]; then exit 0; fi
 bash "$ROOT/scripts/fetch-test-photos.sh"
 bash "$ROOT/scripts/fetch-real-videos.sh"  # calibration frames for the INT8 model
