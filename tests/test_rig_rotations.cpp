@@ -32,6 +32,10 @@ SkeletonPose swing_only(const SkeletonPose& solved) {
   return pose;
 }
 
+// CMU 01_01, every fourth of its first 2000 frames, the toes rigid on the feet (the BVH's own rotations are the truth).
+constexpr size_t kFirst = 0, kCount = 500, kStep = 4;
+synth::Motion cmu_motion() { return synth::load_cmu_motion(synth::default_bvh_path(), kFirst, kCount, kStep, true); }
+
 Calibration six_cameras() {
   synth::RigOptions rig;
   rig.cameras = 6;
@@ -70,17 +74,26 @@ AngleStats compare(const std::vector<Eigen::Quaterniond>& truth, const std::vect
   return {deg[deg.size() / 2], deg[deg.size() * 9 / 10]};
 }
 
+// The CMU take and its truth (the BVH), six cameras, 1 px of noise, and a Y-up session of `layout` over them.
+struct CmuRig {
+  explicit CmuRig(LayoutId layout) : session(config(layout), calib) {}
+  static SessionConfig config(LayoutId layout) {
+    SessionConfig cfg;
+    cfg.layout = layout;
+    cfg.up = UpAxis::y;
+    return cfg;
+  }
+  const BvhMotion bvh = read_bvh(synth::default_bvh_path());
+  const synth::Motion motion = cmu_motion();
+  const Calibration calib = six_cameras();
+  Session session;
+  const synth::NoiseOptions noise = pixel_noise_only(0.01);
+};
+
 }  // namespace
 
 TEST_CASE("bone rotations follow the rig's true rotations: hinge limbs, chest twist, head turn, feet", "[rig][real]") {
-  const BvhMotion bvh = read_bvh(synth::default_bvh_path());
-  const size_t first = 0, count = 500, step = 4;
-  const synth::Motion motion = synth::load_cmu_motion(synth::default_bvh_path(), first, count, step, true);
-  const Calibration calib = six_cameras();
-  SessionConfig cfg;
-  cfg.up = UpAxis::y;
-  Session session(cfg, calib);
-  const synth::NoiseOptions noise = pixel_noise_only(0.01);
+  CmuRig rig(LayoutId::body25);
   std::mt19937 rng(11);
 
   struct Pair {
@@ -97,22 +110,22 @@ TEST_CASE("bone rotations follow the rig's true rotations: hinge limbs, chest tw
   std::vector<std::vector<Eigen::Quaterniond>> truth(kBoneCount), solved(kBoneCount), smallest(kBoneCount);
   std::vector<Eigen::Vector3d> P;
   std::vector<Eigen::Matrix3d> R;
-  for (size_t n = 0; n < motion.frames.size(); ++n) {
-    session.solve(synth::observe(calib, motion.frames[n], LayoutId::body25, noise, rng),
+  for (size_t n = 0; n < rig.motion.frames.size(); ++n) {
+    rig.session.solve(synth::observe(rig.calib, rig.motion.frames[n], LayoutId::body25, rig.noise, rng),
                   static_cast<int64_t>(n) * 33333);
-    const SkeletonPose& pose = session.bones();
+    const SkeletonPose& pose = rig.session.bones();
     const SkeletonPose swing = swing_only(pose);
-    bvh.pose(first + n * step, P, R);
+    rig.bvh.pose(kFirst + n * kStep, P, R);
     bool all = true;
     for (const Pair& p : pairs) all = all && pose[p.bone].valid;
     if (!all) continue;
     for (const Pair& p : pairs) {
-      truth[p.bone].emplace_back(R[bvh.find(p.bvh_joint)]);
+      truth[p.bone].emplace_back(R[rig.bvh.find(p.bvh_joint)]);
       solved[p.bone].push_back(pose[p.bone].global);
       smallest[p.bone].push_back(swing[p.bone].global);
     }
   }
-  REQUIRE(truth[kBoneHead].size() >= 0.95 * static_cast<double>(motion.frames.size()));
+  REQUIRE(truth[kBoneHead].size() >= 0.95 * static_cast<double>(rig.motion.frames.size()));
   for (const Pair& p : pairs) {
     const AngleStats now = compare(truth[p.bone], solved[p.bone]);
     const AngleStats before = compare(truth[p.bone], smallest[p.bone]);
@@ -123,7 +136,7 @@ TEST_CASE("bone rotations follow the rig's true rotations: hinge limbs, chest tw
     CHECK(now.p90_deg < 12.0);
     // Measuring the roll beats leaving it out, for every bone but the root (whose rotation the swing chain keeps) and
     // the feet: CMU's feet hardly roll about their own axis (the swing from the shin is already their rotation), so
-    // their measured roll can only add noise; it must stay within a degree of the swing's (the roll itself is
+    // their measured roll can only add rig.noise; it must stay within a degree of the swing's (the roll itself is
     // tested in tests/test_rig.cpp: a foot rolled 25 deg).
     if (p.bone == kBoneRFoot || p.bone == kBoneLFoot) CHECK(now.p90_deg < before.p90_deg + 1.0);
     else if (p.bone != kBoneRoot) CHECK(now.p90_deg < before.p90_deg);
@@ -172,35 +185,27 @@ TEST_CASE("a head turning 70 deg while the body stands still: the head bone foll
 // The hands against true rotations: the same CMU take seen as BlazePose's layout, knuckles hanging rigidly off the
 // BVH's hands (index in front of the little finger), so that the palm's turn is the hand's.
 TEST_CASE("hand bones follow the rig's true hand rotations, the forearm's twist included", "[rig][real]") {
-  const BvhMotion bvh = read_bvh(synth::default_bvh_path());
-  const size_t first = 0, count = 500, step = 4;
-  const synth::Motion motion = synth::load_cmu_motion(synth::default_bvh_path(), first, count, step, true);
-  const Calibration calib = six_cameras();
-  SessionConfig cfg;
-  cfg.layout = LayoutId::blazepose33;
-  cfg.up = UpAxis::y;
-  Session session(cfg, calib);
-  const synth::NoiseOptions noise = pixel_noise_only(0.01);
+  CmuRig rig(LayoutId::blazepose33);
   std::mt19937 rng(13);
   const std::pair<int, const char*> pairs[] = {{kBoneRHand, "RightHand"}, {kBoneLHand, "LeftHand"}};
   std::vector<std::vector<Eigen::Quaterniond>> truth(kBoneCount), solved(kBoneCount), smallest(kBoneCount);
   std::vector<Eigen::Vector3d> P;
   std::vector<Eigen::Matrix3d> R;
-  for (size_t n = 0; n < motion.frames.size(); ++n) {
-    session.solve(synth::observe(calib, synth::to_layout(motion, n, LayoutId::blazepose33), LayoutId::blazepose33,
-                                 noise, rng),
+  for (size_t n = 0; n < rig.motion.frames.size(); ++n) {
+    rig.session.solve(synth::observe(rig.calib, synth::to_layout(rig.motion, n, LayoutId::blazepose33), LayoutId::blazepose33,
+                                 rig.noise, rng),
                   static_cast<int64_t>(n) * 33333);
-    const SkeletonPose& pose = session.bones();
+    const SkeletonPose& pose = rig.session.bones();
     const SkeletonPose swing = swing_only(pose);
-    bvh.pose(first + n * step, P, R);
+    rig.bvh.pose(kFirst + n * kStep, P, R);
     if (!pose[kBoneRHand].valid || !pose[kBoneLHand].valid) continue;
     for (const auto& [bone, name] : pairs) {
-      truth[bone].emplace_back(R[bvh.find(name)]);
+      truth[bone].emplace_back(R[rig.bvh.find(name)]);
       solved[bone].push_back(pose[bone].global);
       smallest[bone].push_back(swing[bone].global);
     }
   }
-  REQUIRE(truth[kBoneRHand].size() >= 0.95 * static_cast<double>(motion.frames.size()));
+  REQUIRE(truth[kBoneRHand].size() >= 0.95 * static_cast<double>(rig.motion.frames.size()));
   for (const auto& [bone, name] : pairs) {
     const AngleStats now = compare(truth[bone], solved[bone]);
     const AngleStats before = compare(truth[bone], smallest[bone]);
