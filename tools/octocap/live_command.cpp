@@ -35,7 +35,9 @@ int live(const LiveOptions& o) {
   scfg.method = o.method == "triangulation" ? OCTOCAP_METHOD_TRIANGULATION
                 : o.method == "subdivision"  ? OCTOCAP_METHOD_SUBDIVISION
                                              : OCTOCAP_METHOD_AUTO;
-  scfg.filter = o.filter == "none" ? OCTOCAP_FILTER_NONE : OCTOCAP_FILTER_ONE_EURO;
+  scfg.filter = o.filter == "none"            ? OCTOCAP_FILTER_NONE
+                : o.filter == "oneeuro-fixed" ? OCTOCAP_FILTER_ONE_EURO_FIXED
+                                              : OCTOCAP_FILTER_ONE_EURO;
   scfg.max_people = max_people_of(o.people);
   apply_outputs(o.out, scfg);
   octocap::Live capture(cfg, scfg, calib, o.cameras);

@@ -59,7 +59,8 @@ int main(int argc, char** argv) {
   sc->add_option("--method", solve.method, "3D method (auto: subdivision with 5+ cameras, else triangulation)")->check(CLI::IsMember({"auto", "subdivision", "triangulation"}))->capture_default_str();
   sc->add_option("--sigma", solve.sigma, "Views a cube must be supported by (0: cameras - 1)")->capture_default_str();
   sc->add_option("--delta-mm", solve.delta_mm, "Smallest cube edge, mm")->check(CLI::PositiveNumber)->capture_default_str();
-  sc->add_option("--filter", solve.filter, "Temporal filter")->check(CLI::IsMember({"none", "oneeuro"}))->capture_default_str();
+  sc->add_option("--filter", solve.filter, "Temporal filter (oneeuro: its cutoff follows the measured noise; "
+                 "oneeuro-fixed: before 1.4's)")->check(CLI::IsMember({"none", "oneeuro", "oneeuro-fixed"}))->capture_default_str();
   sc->add_option("--layout", solve.layout, "Keypoint layout: auto, BODY_25, BODY_25B, COCO_17, HALPE_26, BLAZEPOSE_33")->capture_default_str();
   sc->add_option("--up", solve.up, "World up axis of the calibration")->check(CLI::IsMember({"auto", "y", "z"}))->capture_default_str();
   sc->add_option("--rate", solve.rate_hz, "Frame rate of the recording, Hz")->check(CLI::PositiveNumber)->capture_default_str();
@@ -105,7 +106,7 @@ int main(int argc, char** argv) {
   lv->add_option("--bvh", live.bvh, "Also write the bone animation as BVH");
   lv->add_option("--record", live.record, "Record the take into this new folder: calibration.toml, images/ (pictures), keypoints/ (OpenPose JSON), timestamps.csv; solve it again with octocap solve --keypoints DIR/keypoints");
   lv->add_option("--method", live.method, "3D method")->check(CLI::IsMember({"auto", "subdivision", "triangulation"}))->capture_default_str();
-  lv->add_option("--filter", live.filter, "Temporal filter")->check(CLI::IsMember({"none", "oneeuro"}))->capture_default_str();
+  lv->add_option("--filter", live.filter, "Temporal filter")->check(CLI::IsMember({"none", "oneeuro", "oneeuro-fixed"}))->capture_default_str();
   add_output_options(lv, live.out);
   lv->add_flag("--quiet", live.quiet, "No status line on stderr");
   add_people_option(lv, live.people);

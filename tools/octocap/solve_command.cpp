@@ -111,7 +111,9 @@ int solve(const SolveOptions& o) {
   cfg.method = o.method == "triangulation" ? OCTOCAP_METHOD_TRIANGULATION
                : o.method == "subdivision"  ? OCTOCAP_METHOD_SUBDIVISION
                                             : OCTOCAP_METHOD_AUTO;
-  cfg.filter = o.filter == "none" ? OCTOCAP_FILTER_NONE : OCTOCAP_FILTER_ONE_EURO;
+  cfg.filter = o.filter == "none"            ? OCTOCAP_FILTER_NONE
+                : o.filter == "oneeuro-fixed" ? OCTOCAP_FILTER_ONE_EURO_FIXED
+                                              : OCTOCAP_FILTER_ONE_EURO;
   cfg.up_axis = o.up == "y" ? OCTOCAP_UP_Y : o.up == "z" ? OCTOCAP_UP_Z : OCTOCAP_UP_AUTO;
   cfg.sigma = o.sigma;
   cfg.delta_m = static_cast<float>(o.delta_mm / 1000.0);

@@ -37,7 +37,7 @@ namespace Octocap
     public enum LogLevel : int { Debug = 0, Info = 1, Warning = 2, Error = 3 }
     public enum Layout : int { Auto = 0, Body25 = 1, Body25B = 2, Coco17 = 3, Halpe26 = 4, BlazePose33 = 5 }
     public enum Method : int { Subdivision = 0, Triangulation = 1, Auto = 2 }
-    public enum Filter : int { None = 0, OneEuro = 1 }
+    public enum Filter : int { None = 0, OneEuro = 1, OneEuroFixed = 2 }
     public enum UpAxis : int { Y = 0, Z = 1, Auto = 2 }
     public enum CoordFrame : int { Rig = 0, Unity = 1, Godot = 2 }
     public enum StreamQos : int { Live = 0, Record = 1 }

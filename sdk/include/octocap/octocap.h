@@ -565,7 +565,11 @@ typedef int32_t octocap_filter_t;
 /** Values of ::octocap_filter_t. */
 enum octocap_filter_values {
   OCTOCAP_FILTER_NONE = 0,
-  OCTOCAP_FILTER_ONE_EURO = 1  /**< Causal One Euro filter: smooth when slow, no lag when fast. */
+  OCTOCAP_FILTER_ONE_EURO = 1,      /**< Causal One Euro filter: smooth when slow, no lag when fast. (1.4) Its minimum
+                                         cutoff follows each keypoint's measured noise (its reprojection error): where
+                                         the views agree within the 3 px it was tuned at, it smooths less (at 1 px as
+                                         good as no filter), never more than the fixed filter. */
+  OCTOCAP_FILTER_ONE_EURO_FIXED = 2 /**< (1.4) The One Euro filter with its minimum cutoff fixed (before 1.4's). */
 };
 
 /** QoS profile of a skeleton stream; publisher and subscriber must use the same one. */

@@ -42,9 +42,10 @@ SessionConfig session_config(const octocap_session_config_t* given) {
       c.method != OCTOCAP_METHOD_AUTO)
     throw Error(Errc::invalid_argument, "config.method is not a known method");
   s.method = static_cast<Method>(c.method);
-  if (c.filter != OCTOCAP_FILTER_NONE && c.filter != OCTOCAP_FILTER_ONE_EURO)
+  if (c.filter != OCTOCAP_FILTER_NONE && c.filter != OCTOCAP_FILTER_ONE_EURO && c.filter != OCTOCAP_FILTER_ONE_EURO_FIXED)
     throw Error(Errc::invalid_argument, "config.filter is not a known filter");
-  s.filter = c.filter == OCTOCAP_FILTER_ONE_EURO;
+  s.filter = c.filter != OCTOCAP_FILTER_NONE;
+  s.filter_adaptive = c.filter == OCTOCAP_FILTER_ONE_EURO;
   if (c.up_axis != OCTOCAP_UP_Y && c.up_axis != OCTOCAP_UP_Z && c.up_axis != OCTOCAP_UP_AUTO)
     throw Error(Errc::invalid_argument, "config.up_axis must be Y, Z or AUTO");
   s.up = static_cast<UpAxis>(c.up_axis);

@@ -142,6 +142,7 @@ uint32_t Session::stream_readers() const {
 Session::PersonState Session::new_person_state() const {
   PersonState st;
   st.filters.assign(layout_->keypoints.size(), OneEuroFilter3(config_.filter_min_cutoff, config_.filter_beta));
+  st.noise_px.assign(layout_->keypoints.size(), 0.0);
   return st;
 }
 
@@ -350,6 +351,23 @@ std::vector<Eigen::Vector3d> Session::raw_pose(const std::vector<PointResult>& k
   return pose;
 }
 
+namespace {
+
+// The adaptive filter: the noise a keypoint's reprojection error shows at the fixed filter's tuning point (3 px of
+// detection noise on 4 views), how fast the estimate follows, and the cutoff's range. The cutoff goes as 1 / noise, as
+// a steady-state Kalman filter's bandwidth does for a given motion.
+constexpr double kTunedNoisePx = 3.0, kNoiseFollow = 0.1, kMinScale = 1, kMaxScale = 100;
+
+}  // namespace
+
+double Session::noise_cutoff_scale(const PointResult& r, double& noise_px) const {
+  if (!config_.filter_adaptive) return 1.0;
+  const double e = std::max(r.reprojection_error_px, 0.05);
+  noise_px = noise_px > 0 ? noise_px + kNoiseFollow * (e - noise_px) : e;
+  const double ratio = kTunedNoisePx / noise_px;
+  return std::clamp(ratio * ratio * ratio * ratio, kMinScale, kMaxScale);
+}
+
 void Session::finish_person(PersonResult& person, PersonState& state, double dt) const {
   const size_t K = person.keypoints.size();
   state.raw_previous = raw_pose(person.keypoints);
@@ -363,7 +381,7 @@ void Session::finish_person(PersonResult& person, PersonState& state, double dt)
     }
     ++solved;
     err += r.reprojection_error_px;
-    if (config_.filter) r.position = state.filters[k].filter(r.position, dt);
+    if (config_.filter) r.position = state.filters[k].filter(r.position, dt, noise_cutoff_scale(r, state.noise_px[k]));
   }
   person.keypoints_solved = solved;
   person.mean_reprojection_error_px = solved ? err / solved : 0;

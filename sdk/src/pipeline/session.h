@@ -34,6 +34,9 @@ struct SessionConfig {
   LayoutId layout = LayoutId::body25;
   Method method = Method::automatic;
   bool filter = true;
+  // The filter's minimum cutoff follows each keypoint's measured noise (its reprojection error, smoothed): a clean
+  // keypoint is smoothed less, a noisy one more (README "Choosing the defaults").
+  bool filter_adaptive = true;
   UpAxis up = UpAxis::automatic;
   int sigma = 0;  // 0: camera count - 1, at least 2
   int min_views = 2;
@@ -116,6 +119,7 @@ class Session {
   struct PersonState {
     std::vector<Eigen::Vector3d> raw_previous;  // empty when unknown
     std::vector<OneEuroFilter3> filters;
+    std::vector<double> noise_px;  // per keypoint, the smoothed reprojection error (0: none yet)
     BoneSolver bone_solver;
   };
   PersonState new_person_state() const;
@@ -127,6 +131,8 @@ class Session {
   static std::vector<Eigen::Vector3d> raw_pose(const std::vector<PointResult>& keypoints);
   // Filters the person's keypoints with its state, then derives its joints and bones.
   void finish_person(PersonResult& person, PersonState& state, double dt) const;
+  // The adaptive filter's factor on the minimum cutoff for this sample; updates the keypoint's noise estimate.
+  double noise_cutoff_scale(const PointResult& r, double& noise_px) const;
   void solve_one(const std::vector<std::vector<Person2D>>& usable, const std::vector<std::vector<int>>& original,
                  double dt);
   void solve_several(const std::vector<std::vector<Person2D>>& usable, const std::vector<std::vector<int>>& original,

@@ -12,7 +12,7 @@ double alpha(double cutoff_hz, double dt) {
 
 }  // namespace
 
-Eigen::Vector3d OneEuroFilter3::filter(const Eigen::Vector3d& x, double dt) {
+Eigen::Vector3d OneEuroFilter3::filter(const Eigen::Vector3d& x, double dt, double cutoff_scale) {
   if (!initialised_ || !(dt > 0)) {
     initialised_ = true;
     x_prev_ = x;
@@ -23,7 +23,7 @@ Eigen::Vector3d OneEuroFilter3::filter(const Eigen::Vector3d& x, double dt) {
   const double ad = alpha(d_cutoff_, dt);
   dx_prev_ = ad * dx + (1 - ad) * dx_prev_;
   // One cutoff for the whole point (from its speed), so the three axes stay in step.
-  const double cutoff = min_cutoff_ + beta_ * dx_prev_.norm();
+  const double cutoff = min_cutoff_ * cutoff_scale + beta_ * dx_prev_.norm();
   const double a = alpha(cutoff, dt);
   x_prev_ = a * x + (1 - a) * x_prev_;
   return x_prev_;
