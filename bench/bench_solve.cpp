@@ -15,6 +15,7 @@
 #include "solve/subdivision.h"
 #include "skeleton_truth.h"
 #include "synth.h"
+#include "take_score.h"
 
 using namespace octocap;
 using Clock = std::chrono::steady_clock;
@@ -277,39 +278,9 @@ void filter_table() {
       cfg.up = UpAxis::y;
       cfg.filter = mode > 0;
       cfg.filter_adaptive = mode == 2;
-      Session session(cfg, cams);
-      synth::NoiseOptions noise;
-      noise.pixel_sigma = sigma;
-      noise.missing = noise.outlier = noise.swap = 0;
-      std::mt19937 rng(3);
-      std::vector<std::vector<Eigen::Vector3d>> got;
-      std::vector<double> reprojection;
-      for (size_t n = 0; n < motion.frames.size(); ++n) {
-        session.solve(synth::observe(cams, motion.frames[n], LayoutId::body25, noise, rng),
-                      static_cast<int64_t>(n * 1e6 / motion.rate_hz));
-        std::vector<Eigen::Vector3d> p;
-        for (const PointResult& k : session.keypoints()) {
-          p.push_back(k.valid ? k.position : Eigen::Vector3d::Constant(NAN));
-          if (k.valid) reprojection.push_back(k.reprojection_error_px);
-        }
-        got.push_back(p);
-      }
-      double err = 0, jitter = 0;
-      size_t ne = 0, nj = 0;
-      for (size_t n = 0; n < got.size(); ++n)
-        for (size_t k = 0; k < got[n].size(); ++k) {
-          if (!got[n][k].allFinite()) continue;
-          err += (got[n][k] - motion.frames[n][k]).norm(), ++ne;
-          if (n < 1 || n + 1 >= got.size() || !got[n - 1][k].allFinite() || !got[n + 1][k].allFinite()) continue;
-          const Eigen::Vector3d a = got[n + 1][k] - 2 * got[n][k] + got[n - 1][k];
-          const Eigen::Vector3d t = motion.frames[n + 1][k] - 2 * motion.frames[n][k] + motion.frames[n - 1][k];
-          jitter += (a - t).norm(), ++nj;
-        }
-      std::printf(" %.1f / %.1f |", 1000 * err / std::max<size_t>(ne, 1), 1000 * jitter / std::max<size_t>(nj, 1));
-      if (mode == 2) {
-        std::nth_element(reprojection.begin(), reprojection.begin() + reprojection.size() / 2, reprojection.end());
-        std::printf(" %.2f px |", reprojection[reprojection.size() / 2]);
-      }
+      const testing::TakeScore r = testing::score_take(cams, motion, cfg, sigma);
+      std::printf(" %.1f / %.1f |", r.mpjpe_mm, r.jitter_mm);
+      if (mode == 2) std::printf(" %.2f px |", r.median_reprojection_px);
     }
     std::printf("\n");
   }

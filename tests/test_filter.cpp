@@ -7,6 +7,7 @@
 #include "pipeline/session.h"
 #include "solve/one_euro.h"
 #include "synth.h"
+#include "take_score.h"
 
 using namespace octocap;
 
@@ -54,43 +55,17 @@ TEST_CASE("the default filter smooths a clean signal less and a noisy one as muc
   rig.width = 1920, rig.height = 1080, rig.focal = 1400;
   const Calibration cams = synth::make_camera_ring(rig);
   const synth::Motion motion = synth::load_cmu_motion(synth::default_bvh_path(), 0, 300, 4);
-  struct Score {
-    double mpjpe_mm = 0, jitter_mm = 0;
-  };
   auto run = [&](double sigma, bool filter, bool adaptive) {
     SessionConfig cfg;
     cfg.up = UpAxis::y;
     cfg.filter = filter;
     cfg.filter_adaptive = adaptive;
-    Session session(cfg, cams);
-    synth::NoiseOptions noise;
-    noise.pixel_sigma = sigma;
-    noise.missing = noise.outlier = noise.swap = 0;
-    std::mt19937 rng(3);
-    std::vector<std::vector<Eigen::Vector3d>> got;
-    for (size_t n = 0; n < motion.frames.size(); ++n) {
-      REQUIRE(session.solve(synth::observe(cams, motion.frames[n], LayoutId::body25, noise, rng),
-                            static_cast<int64_t>(n * 1e6 / motion.rate_hz)));
-      std::vector<Eigen::Vector3d> p;
-      for (const PointResult& k : session.keypoints()) p.push_back(k.valid ? k.position : Eigen::Vector3d::Constant(NAN));
-      got.push_back(p);
-    }
-    Score s;
-    size_t ne = 0, nj = 0;
-    for (size_t n = 1; n + 1 < got.size(); ++n)
-      for (size_t k = 0; k < got[n].size(); ++k) {
-        if (!got[n][k].allFinite() || !got[n - 1][k].allFinite() || !got[n + 1][k].allFinite()) continue;
-        s.mpjpe_mm += 1000 * (got[n][k] - motion.frames[n][k]).norm(), ++ne;
-        const Eigen::Vector3d a = got[n + 1][k] - 2 * got[n][k] + got[n - 1][k];
-        const Eigen::Vector3d t = motion.frames[n + 1][k] - 2 * motion.frames[n][k] + motion.frames[n - 1][k];
-        s.jitter_mm += 1000 * (a - t).norm(), ++nj;
-      }
-    REQUIRE(ne > 0.9 * 25 * got.size());
-    s.mpjpe_mm /= ne, s.jitter_mm /= nj;
+    const testing::TakeScore s = testing::score_take(cams, motion, cfg, sigma);
+    REQUIRE(s.points > 0.9 * 25 * motion.frames.size());
     return s;
   };
   for (double sigma : {1.0, 6.0}) {
-    const Score none = run(sigma, false, false), fixed = run(sigma, true, false), adaptive = run(sigma, true, true);
+    const testing::TakeScore none = run(sigma, false, false), fixed = run(sigma, true, false), adaptive = run(sigma, true, true);
     INFO(sigma << " px: none " << none.mpjpe_mm << " / " << none.jitter_mm << " mm, fixed " << fixed.mpjpe_mm << " / "
                << fixed.jitter_mm << ", adaptive " << adaptive.mpjpe_mm << " / " << adaptive.jitter_mm);
     if (sigma < 2) {  // measured: none 3.2 / 7.7, fixed 6.4 / 5.1, adaptive 3.3 / 7.3
