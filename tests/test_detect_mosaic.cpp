@@ -3,6 +3,7 @@
 #include <catch2/catch_test_macros.hpp>
 #include <random>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/layout.h"
@@ -113,4 +114,14 @@ TEST_CASE("turned crops: a body leaning 90 deg is turned upright, and pixels map
   CHECK(y == Approx(spot_y).margin(0.05));
   // Past the picture's edge the canvas stays black.
   CHECK(canvas.pixels[0] == 0);
+  // Keypoints too far out to crop around (a hint reprojected near a camera's plane): no crop, nothing drawn.
+  Person2D wild = lying;
+  wild[0] = {1e300, -1e300, 1};
+  const TurnedCrop none = turned_crop_around(wild, *lean, 1.0, 1.4, 0.3);
+  CHECK(none.height == 0);
+  TurnedCrop far = crop;
+  far.centre_x = 1e15;
+  canvas.reset(64, 64);
+  draw_turned(image, far, canvas);
+  CHECK(std::all_of(canvas.pixels.begin(), canvas.pixels.end(), [](uint8_t p) { return p == 0; }));
 }

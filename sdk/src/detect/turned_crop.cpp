@@ -64,6 +64,8 @@ TurnedCrop turned_crop_around(const Person2D& person, double angle, double aspec
   const double cu = (u0 + u1) / 2, cv = (v0 + v1) / 2, c = std::cos(angle), s = std::sin(angle);
   crop.centre_x = mx + c * cu - s * cv;
   crop.centre_y = my + s * cu + c * cv;
+  // Keypoints too far out to make a crop of (no picture is a million pixels tall): none; the caller crops level.
+  if (!std::isfinite(crop.centre_x) || !std::isfinite(crop.centre_y) || !(crop.height < 1e6)) crop.width = crop.height = 0;
   return crop;
 }
 
@@ -85,17 +87,20 @@ void draw_turned(const ImageView& image, const TurnedCrop& crop, RgbCanvas& canv
     turned_to_source(crop, canvas.width, canvas.height, x, y);
     x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
   }
-  const int ax0 = std::clamp(static_cast<int>(std::floor(x0)) - 1, 0, image.width);
-  const int ay0 = std::clamp(static_cast<int>(std::floor(y0)) - 1, 0, image.height);
-  const int ax1 = std::clamp(static_cast<int>(std::ceil(x1)) + 2, 0, image.width);
-  const int ay1 = std::clamp(static_cast<int>(std::ceil(y1)) + 2, 0, image.height);
+  // Clamped as doubles first: a crop from a wild hint (a point reprojected near a camera's plane) may lie far outside
+  // int's range.
+  auto clamped = [](double v, int hi) { return static_cast<int>(std::clamp(v, 0.0, static_cast<double>(hi))); };
+  const int ax0 = clamped(std::floor(x0) - 1, image.width), ay0 = clamped(std::floor(y0) - 1, image.height);
+  const int ax1 = clamped(std::ceil(x1) + 2, image.width), ay1 = clamped(std::ceil(y1) + 2, image.height);
   cv::Mat out(canvas.height, canvas.width, CV_8UC3, canvas.pixels.data());
-  if (ax1 <= ax0 || ay1 <= ay0) return;  // nothing of the image: black
+  if (!std::isfinite(x0 + x1 + y0 + y1) || ax1 <= ax0 || ay1 <= ay0) return;  // nothing of the image: black
   // Shrinking by more than 2x aliases with bilinear sampling: the area is first shrunk to at most twice the canvas.
   const double scale = canvas.height / crop.height;
   const double f = std::min(1.0, 2 * scale);
   cv::Mat area = src(cv::Rect(ax0, ay0, ax1 - ax0, ay1 - ay0)), small;
-  if (f < 1) cv::resize(area, small, cv::Size(), f, f, cv::INTER_AREA);
+  if (f < 1)
+    cv::resize(area, small, cv::Size(std::max(1, static_cast<int>(std::lround(area.cols * f))),
+                                     std::max(1, static_cast<int>(std::lround(area.rows * f)))), 0, 0, cv::INTER_AREA);
   else small = area;
   const double kx = static_cast<double>(small.cols) / area.cols, ky = static_cast<double>(small.rows) / area.rows;
   // Canvas pixel (x, y) samples source (turned_to_source), in `small`'s pixels: an affine map, inverted for OpenCV.
