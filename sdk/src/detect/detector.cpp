@@ -249,8 +249,8 @@ std::vector<DetectedPerson> Detector::detect_view(size_t v, const ImageView& vie
   // Whose keypoints shape each crop (its turn with the body): the hint, else last frame's person.
   std::vector<const Person2D*> shapes = expected;
   if (boxes.empty()) {
-    boxes = last_boxes_[v], expected.assign(boxes.size(), nullptr);
-    for (const Person2D& p : last_people_[v]) shapes.push_back(&p);
+    for (const Person2D& p : last_people_[v]) boxes.push_back(keypoint_box(p, config_.min_confidence)), shapes.push_back(&p);
+    expected.assign(boxes.size(), nullptr);
   }
   if (boxes.size() > wanted) boxes.resize(wanted), expected.resize(wanted);
   std::vector<DetectedPerson> people;
@@ -294,18 +294,17 @@ std::vector<DetectedPerson> Detector::detect_view(size_t v, const ImageView& vie
   // Several people: now and then the whole view, for whoever is not followed yet (needs a multi-person model); at
   // once when someone of the last frame is missing (a crop lost its person, or the 3D solve lost them: someone
   // stepped in front, and the whole view may still show them).
-  const size_t before = std::max(boxes.size(), last_boxes_[v].size());
+  const size_t before = std::max(boxes.size(), last_people_[v].size());
   if (searches && people.size() < wanted &&
       (people.size() < std::max<size_t>(before, 1) || ++frames_since_search_[v] >= config_.new_people_every)) {
     frames_since_search_[v] = 0;
     for (DetectedPerson& p : infer_region(view, whole)) add_unless_seen(std::move(p));
   }
   // An empty box (nobody confident) is no box: next frame then looks at the whole view again.
-  last_boxes_[v].clear();
   last_people_[v].clear();
   for (const DetectedPerson& p : people) {
     const Rect box = keypoint_box(p.keypoints, config_.min_confidence);
-    if (box.width > 0 || box.height > 0) last_boxes_[v].push_back(box), last_people_[v].push_back(p.keypoints);
+    if (box.width > 0 || box.height > 0) last_people_[v].push_back(p.keypoints);
   }
   return people;
 }
@@ -326,7 +325,6 @@ std::vector<std::vector<DetectedPerson>> Detector::detect(const std::vector<Imag
     result = detect_mosaic(views);
   } else {
     result.resize(views.size());
-    last_boxes_.resize(views.size());
     last_people_.resize(views.size());
     frames_since_search_.resize(views.size(), 0);
     // Views are independent here: up to parallel_ of them at once, each writing only its own slots.

@@ -88,8 +88,8 @@ class Detector {
   std::mutex timing_mutex_;
   const Person2D& first_hint(size_t v) const;
   std::vector<std::vector<Person2D>> hints_;
-  std::vector<std::vector<Rect>> last_boxes_;  // the crop mode's fallback when no hint was given
-  std::vector<std::vector<Person2D>> last_people_;  // whose boxes those are (for a turned crop)
+  // The crop mode's fallback when no hint was given: last frame's people (their boxes, and their turn for a turned crop).
+  std::vector<std::vector<Person2D>> last_people_;
   std::vector<int> frames_since_search_;       // per view, find_new_people
   DetectTimings timings_;
 };

@@ -30,6 +30,13 @@ void to_crop(double angle, double dx, double dy, double& u, double& v) {
   v = -s * dx + c * dy;
 }
 
+// Crop frame -> source: the offset (u, v) turned by the angle, added to the centre (cx, cy).
+void from_crop(double angle, double cx, double cy, double u, double v, double& x, double& y) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  x = cx + c * u - s * v;
+  y = cy + s * u + c * v;
+}
+
 }  // namespace
 
 std::optional<double> body_lean(const Person2D& person, const KeypointLayout& layout, double min_confidence) {
@@ -61,9 +68,7 @@ TurnedCrop turned_crop_around(const Person2D& person, double angle, double aspec
   crop.height = std::max(v1 - v0, (u1 - u0) / aspect) * pad;
   crop.width = crop.height * aspect;
   // The box's centre, back in source pixels.
-  const double cu = (u0 + u1) / 2, cv = (v0 + v1) / 2, c = std::cos(angle), s = std::sin(angle);
-  crop.centre_x = mx + c * cu - s * cv;
-  crop.centre_y = my + s * cu + c * cv;
+  from_crop(angle, mx, my, (u0 + u1) / 2, (v0 + v1) / 2, crop.centre_x, crop.centre_y);
   // Keypoints too far out to make a crop of (no picture is a million pixels tall): none; the caller crops level.
   if (!std::isfinite(crop.centre_x) || !std::isfinite(crop.centre_y) || !(crop.height < 1e6)) crop.width = crop.height = 0;
   return crop;
@@ -71,10 +76,8 @@ TurnedCrop turned_crop_around(const Person2D& person, double angle, double aspec
 
 void turned_to_source(const TurnedCrop& crop, int canvas_width, int canvas_height, double& x, double& y) {
   const double scale = canvas_height / crop.height;  // canvas pixels per source pixel
-  const double u = (x - (canvas_width - 1) / 2.0) / scale, v = (y - (canvas_height - 1) / 2.0) / scale;
-  const double c = std::cos(crop.angle), s = std::sin(crop.angle);
-  x = crop.centre_x + c * u - s * v;
-  y = crop.centre_y + s * u + c * v;
+  from_crop(crop.angle, crop.centre_x, crop.centre_y, (x - (canvas_width - 1) / 2.0) / scale,
+            (y - (canvas_height - 1) / 2.0) / scale, x, y);
 }
 
 void draw_turned(const ImageView& image, const TurnedCrop& crop, RgbCanvas& canvas) {
