@@ -25,6 +25,7 @@ struct Path {
   const char* model;
   uint32_t parallel_views;
   octocap_layout_t layout = OCTOCAP_LAYOUT_COCO_17;
+  uint32_t views_per_frame = 0;  // detection scheduling: the other views followed by optical flow
 };
 const Path kPaths[] = {{"per-view lightning", OCTOCAP_DETECT_PER_VIEW, "movenet-lightning", 1},
                        {"per-view thunder", OCTOCAP_DETECT_PER_VIEW, "movenet-thunder", 1},
@@ -36,7 +37,16 @@ const Path kPaths[] = {{"per-view lightning", OCTOCAP_DETECT_PER_VIEW, "movenet-
                         OCTOCAP_LAYOUT_BLAZEPOSE_33},
                        {"crop blazepose full, 2 views at once", OCTOCAP_DETECT_CROP, "blazepose-full", 2,
                         OCTOCAP_LAYOUT_BLAZEPOSE_33},
-                       {"mosaic multipose", OCTOCAP_DETECT_MOSAIC, "movenet-multipose", 1}};
+                       {"mosaic multipose", OCTOCAP_DETECT_MOSAIC, "movenet-multipose", 1},
+                       {"crop thunder, 1 view detected a frame, 3 followed by flow", OCTOCAP_DETECT_CROP,
+                        "movenet-thunder", 1, OCTOCAP_LAYOUT_COCO_17, 1},
+                       {"crop thunder, 2 views detected a frame (at once), 2 followed", OCTOCAP_DETECT_CROP,
+                        "movenet-thunder", 2, OCTOCAP_LAYOUT_COCO_17, 2},
+                       {"crop lightning, 2 views at once", OCTOCAP_DETECT_CROP, "movenet-lightning", 2},
+                       {"crop lightning, 1 view detected a frame, 3 followed by flow", OCTOCAP_DETECT_CROP,
+                        "movenet-lightning", 1, OCTOCAP_LAYOUT_COCO_17, 1},
+                       {"crop lightning, 2 views detected a frame (at once), 2 followed", OCTOCAP_DETECT_CROP,
+                        "movenet-lightning", 2, OCTOCAP_LAYOUT_COCO_17, 2}};
 
 // Keypoints scored apart from the body: MoveNet has none of them.
 bool is_foot(const char* name) { return std::strstr(name, "Heel") || std::strstr(name, "Toe") || std::strstr(name, "FootIndex"); }
@@ -49,6 +59,7 @@ octocap_detector_config_t config_of(const Path& p, uint32_t threads) {
   c.mode = p.mode;
   c.threads = p.parallel_views > 1 ? 0 : threads;
   c.parallel_views = p.parallel_views;
+  c.views_per_frame = p.views_per_frame;
   return c;
 }
 
@@ -114,7 +125,8 @@ void speed(const std::vector<std::vector<cv::Mat>>& frames) {
     }
 }
 
-void accuracy() {
+// only: rows whose name contains it (empty: every row).
+void accuracy(const std::string& only = "") {
   octocap_calibration_t* calib = nullptr;
   if (octocap_calibration_load((kDemo + "/calibration/Calib_qualisys.toml").c_str(), &calib) != OCTOCAP_OK) {
     std::printf("no calibration: %s\n", octocap_last_error());
@@ -126,6 +138,7 @@ void accuracy() {
               "(body) | feet keypoints solved, heels' median distance mm | detect ms/frame |\n");
   std::printf("|---|---|---|---|---|---|\n");
   for (const Path& p : kPaths) {
+    if (std::string(p.name).find(only) == std::string::npos) continue;
     octocap_session_config_t cfg;
     octocap_session_config_init(&cfg);
     cfg.layout = p.layout;
@@ -240,8 +253,8 @@ int main(int argc, char** argv) {
     crop_gap();
     return 0;
   }
-  if (argc > 1 && std::string(argv[1]) == "--accuracy") {  // that table alone
-    accuracy();
+  if (argc > 1 && std::string(argv[1]) == "--accuracy") {  // that table alone (rows naming argv[2])
+    accuracy(argc > 2 ? argv[2] : "");
     return 0;
   }
   const auto frames = read_frames(12);

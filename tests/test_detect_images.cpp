@@ -93,6 +93,60 @@ TEST_CASE("solving real multi-camera videos from images matches Pose2Sim's repro
   }
 }
 
+TEST_CASE("detection scheduling on the real videos: two views detected a frame, two followed by flow, accuracy kept") {
+  testing::Calib calib = load_demo_calibration();
+  std::vector<cv::VideoCapture> videos = open_demo_videos();
+  testing::Session s = unfiltered_session(calib, OCTOCAP_LAYOUT_COCO_17);
+  octocap_detector_config_t detector;
+  octocap_detector_config_init(&detector);
+  detector.views_per_frame = 2;
+  REQUIRE(octocap_session_set_detector(s.get(), &detector) == OCTOCAP_OK);
+  const int frames = 24;
+  testing::Pose2SimReference score(kDemo + "/opensim/Balancing_for_IK.trc", OCTOCAP_LAYOUT_COCO_17);
+  std::vector<int> since_detected(4, 0);
+  size_t tracked = 0;
+  for (int f = 0; f < frames; ++f) {
+    std::vector<cv::Mat> images(4);
+    std::vector<octocap_image_t> views;
+    for (int c = 0; c < 4; ++c) {
+      REQUIRE(videos[c].read(images[c]));
+      views.push_back({images[c].data, static_cast<uint32_t>(images[c].cols), static_cast<uint32_t>(images[c].rows),
+                       static_cast<uint32_t>(images[c].step[0]), OCTOCAP_PIXELS_BGR8});
+    }
+    REQUIRE(octocap_session_solve_images(s.get(), views.data(), 4, f * 16667) == OCTOCAP_OK);
+    octocap_detect_info_t info{};
+    info.struct_size = sizeof info;
+    REQUIRE(octocap_session_detect_info(s.get(), &info) == OCTOCAP_OK);
+    INFO("frame " << f << ": " << info.inferences << " inferences, " << info.views_tracked << " views tracked");
+    CHECK(info.device == OCTOCAP_DEVICE_CPU);
+    if (f == 0) {
+      CHECK(info.views_tracked == 0);  // nothing to follow yet: every view detected
+      continue;
+    }
+    CHECK(info.inferences + info.views_tracked == 4);
+    CHECK(info.inferences >= 2);  // the budget, and more only for a view that lost its person
+    tracked += info.views_tracked;
+    octocap_joint_t j[17];
+    uint32_t n = 0;
+    REQUIRE(octocap_session_get_keypoints3d(s.get(), j, 17, &n) == OCTOCAP_OK);
+    score.add(static_cast<size_t>(f), j);
+    // Every view still reports its person, detected or followed.
+    for (uint32_t v = 0; v < 4; ++v) {
+      REQUIRE(octocap_session_detections(s.get(), v, nullptr, 0, &n) == OCTOCAP_OK);
+      CHECK(n >= 17);
+    }
+  }
+  CHECK(tracked >= (frames - 1) * 3 / 2);  // most frames followed two views (measured: all)
+  const double med_px = median(score.reprojection_px), med_mm = 1000 * median(score.distance_m);
+  INFO("solved " << score.solved << "/" << (frames - 1) * 17 << ", median reprojection " << med_px
+                 << " px, median distance to Pose2Sim " << med_mm << " mm");
+  // What every view detected every frame gives (the test above): the whole take measures 99.4 % and 36 mm here,
+  // 99.2 % and 35 mm detecting every view.
+  CHECK(score.solved >= 0.95 * (frames - 1) * 17);
+  CHECK(med_px <= 10.7);
+  CHECK(med_mm < 60.0);
+}
+
 TEST_CASE("BlazePose on the real videos: heels, foot tips and hands from pixels, feet and hand bones, a lean kept",
           "[real]") {
   testing::Calib calib = load_demo_calibration();

@@ -442,3 +442,52 @@ TEST_CASE("views inferred at once give exactly what one view after another gives
       CHECK(results[0][p][k].confidence == results[1][p][k].confidence);
     }
 }
+
+TEST_CASE("the GPU is used when asked and there, else AUTO falls back to the CPU with a warning and CUDA says why") {
+  std::vector<std::string> warnings;
+  octocap_set_log_callback([](octocap_log_level_t level, const char* message, void* user) {
+    if (level == OCTOCAP_LOG_WARNING) static_cast<std::vector<std::string>*>(user)->push_back(message);
+  }, OCTOCAP_LOG_WARNING, &warnings);
+  octocap_detector_config_t cfg;
+  octocap_detector_config_init(&cfg);
+  CHECK(cfg.device == OCTOCAP_DEVICE_CPU);  // a CPU user never loads CUDA libraries
+  std::snprintf(cfg.model, sizeof cfg.model, "movenet-lightning");
+  cfg.device = OCTOCAP_DEVICE_CUDA;
+  octocap_detector_t* raw = nullptr;
+  const octocap_result_t required = octocap_detector_create(&cfg, &raw);
+  Detector cuda(raw);
+  const std::string why = required == OCTOCAP_OK ? "" : octocap_last_error();
+  cfg.device = OCTOCAP_DEVICE_AUTO;
+  raw = nullptr;
+  REQUIRE(octocap_detector_create(&cfg, &raw) == OCTOCAP_OK);  // AUTO always gives a detector
+  Detector automatic(raw);
+  cfg.device = 7;
+  raw = nullptr;
+  CHECK(octocap_detector_create(&cfg, &raw) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  CHECK(std::string(octocap_last_error()).find("device 7") != std::string::npos);
+  octocap_set_log_callback(nullptr, OCTOCAP_LOG_WARNING, nullptr);
+
+  const cv::Mat photo = cv::imread(kPhotos + "astronaut.png", cv::IMREAD_COLOR);
+  REQUIRE(!photo.empty());
+  octocap_image_t im = image_of(photo);
+  REQUIRE(octocap_detector_run(automatic.get(), &im, 1) == OCTOCAP_OK);
+  octocap_detect_info_t info{};
+  info.struct_size = sizeof info;
+  REQUIRE(octocap_detector_info(automatic.get(), &info) == OCTOCAP_OK);
+  const auto people = people_of(automatic.get(), 0);
+  REQUIRE(people.size() == 1);
+  CHECK(kAstronautHead.holds(people[0][0]));  // on either device, the nose in her head
+  INFO("CUDA: " << (required == OCTOCAP_OK ? "available" : why));
+  if (required == OCTOCAP_OK) {  // a GPU build on a machine with a GPU
+    CHECK(info.device == OCTOCAP_DEVICE_CUDA);
+    CHECK(warnings.empty());
+    return;
+  }
+  // Here (CI, the CPU wheel of ONNX Runtime): CUDA refused, saying what is missing and how to get it; AUTO on the CPU.
+  CHECK(required == OCTOCAP_ERROR_UNSUPPORTED);
+  CHECK(why.find("no GPU for model movenet-lightning") != std::string::npos);
+  CHECK(why.find("install-deps.sh --gpu") != std::string::npos);
+  CHECK(info.device == OCTOCAP_DEVICE_CPU);
+  REQUIRE(warnings.size() == 1);
+  CHECK(warnings[0].find("runs on the CPU") != std::string::npos);
+}

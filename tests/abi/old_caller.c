@@ -1,7 +1,8 @@
 /* A program as it was written against an old header (tests/abi/headers/, taken from git history), compiled against
  * that header and run against today's library. OLD_API says which header: 1 = 0.1, 2 = 0.2 (streaming),
  * 3 = 0.2 with VMC, 4 = 0.3 (detector nested in the session config), 5 = the last 0.3, 6 = 1.1 (live capture,
- * capture nodes), 7 = 1.2 (live recording; the session config before max_people).
+ * capture nodes), 7 = 1.2 (live recording; the session config before max_people), 8 = 1.3, 9 = 1.4 (the detector
+ * config before detection scheduling and the device).
  *
  * It checks what the compatibility promise says: no _init writes past the caller's struct (guard bytes after each
  * struct stay intact), every old struct size is accepted, and the old per-source queries still solve the built-in

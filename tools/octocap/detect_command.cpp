@@ -107,6 +107,8 @@ octocap_detector_config_t DetectorOptions::config() const {
   c.mosaic_tile_px = mosaic_tile;
   c.max_people = max_people;
   c.parallel_views = parallel_views;
+  c.views_per_frame = views_per_frame;
+  c.device = device == "cuda" ? OCTOCAP_DEVICE_CUDA : device == "auto" ? OCTOCAP_DEVICE_AUTO : OCTOCAP_DEVICE_CPU;
   return c;
 }
 

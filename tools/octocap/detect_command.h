@@ -14,6 +14,8 @@ struct DetectorOptions {
   unsigned mosaic_tile = 256;
   unsigned max_people = 4;
   unsigned parallel_views = 0;
+  unsigned views_per_frame = 0;
+  std::string device = "cpu";
   octocap_detector_config_t config() const;
 };
 

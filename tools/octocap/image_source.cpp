@@ -1,6 +1,7 @@
 #include "image_source.h"
 
 #include <algorithm>
+#include <future>
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/videoio.hpp>
@@ -67,9 +68,28 @@ ImageSource::ImageSource(const std::string& folder) {
     throw std::runtime_error(folder + " holds neither videos (one per camera) nor sub-folders of pictures");
 }
 
-ImageSource::~ImageSource() = default;
+ImageSource::~ImageSource() {
+  if (ahead_.valid()) ahead_.wait();  // its error, if any, is nobody's now
+}
 
 std::vector<cv::Mat> ImageSource::read(size_t f) {
+  std::vector<cv::Mat> images;
+  if (ahead_.valid() && ahead_frame_ == f) {
+    images = ahead_.get();
+  } else {
+    if (ahead_.valid()) ahead_.wait();  // another frame was asked for: the cameras are free again once it is read
+    ahead_ = {};
+    images = read_now(f);
+  }
+  // The next frame decodes while the caller detects and solves this one: one frame ahead, never more.
+  if (f + 1 < frames_) {
+    ahead_frame_ = f + 1;
+    ahead_ = std::async(std::launch::async, [this, f] { return read_now(f + 1); });
+  }
+  return images;
+}
+
+std::vector<cv::Mat> ImageSource::read_now(size_t f) {
   std::vector<cv::Mat> images;
   for (size_t c = 0; c < cameras_.size(); ++c) {
     Camera& cam = *cameras_[c];

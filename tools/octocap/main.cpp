@@ -18,6 +18,8 @@ void add_detector_options(CLI::App* app, DetectorOptions& d) {
   app->add_option("--mosaic-tile", d.mosaic_tile, "Mosaic: tile height in pixels")->capture_default_str();
   app->add_option("--max-people", d.max_people, "People kept per view")->check(CLI::Range(1, 64))->capture_default_str();
   app->add_option("--parallel-views", d.parallel_views, "Views inferred at once (0: one per core)")->check(CLI::Range(0, 256))->capture_default_str();
+  app->add_option("--views-per-frame", d.views_per_frame, "Views detected each frame, the others followed by optical flow (0: every view; README \"Real time\")")->check(CLI::Range(0, 256))->capture_default_str();
+  app->add_option("--device", d.device, "Where the network runs: cpu, auto (the GPU when there is one, else the CPU) or cuda (the GPU or an error)")->check(CLI::IsMember({"cpu", "auto", "cuda"}))->capture_default_str();
 }
 
 void add_output_options(CLI::App* app, OutputOptions& o) {

@@ -148,7 +148,8 @@ int solve(const SolveOptions& o) {
   std::vector<size_t> people_histogram;               // frames with 0, 1, 2, ... people
   std::map<uint32_t, std::vector<double>> person_errors;  // per person id: reprojection errors
   size_t solved_keypoints = 0, frames_with_result = 0, frames_multi = 0;
-  double solve_ms = 0, detect_ms = 0;
+  double solve_ms = 0, detect_ms = 0, read_ms = 0, inference_ms = 0, track_ms = 0;
+  size_t inferences = 0, views_tracked = 0;
   std::string detect_model;
   octocap_detect_mode_t detect_mode = OCTOCAP_DETECT_CROP;
   Accuracy acc;
@@ -174,12 +175,18 @@ int solve(const SolveOptions& o) {
     octocap_result_t r = OCTOCAP_OK;  // or OCTOCAP_STATUS_NO_PERSON
     std::vector<cv::Mat> images;
     if (source) {
+      const auto read_start = std::chrono::steady_clock::now();
       images = source->read(f);
+      read_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - read_start).count();
       std::vector<octocap_image_t> views_c;
       for (const cv::Mat& m : images) views_c.push_back(as_image(m));
       r = session.solve_images(views_c.data(), views, t_us);
       const octocap_detect_info_t dinfo = session.detect_info();
       detect_ms += dinfo.total_ms;
+      inference_ms += dinfo.inference_ms;
+      track_ms += dinfo.track_ms;
+      inferences += dinfo.inferences;
+      views_tracked += dinfo.views_tracked;
       detect_model = dinfo.model;
       detect_mode = dinfo.mode;
       bool crowded = false;
@@ -272,6 +279,11 @@ int solve(const SolveOptions& o) {
                 done ? detect_ms / done : 0.0, detect_model.c_str(),
                 detect_mode == OCTOCAP_DETECT_PER_VIEW ? "per-view" : detect_mode == OCTOCAP_DETECT_MOSAIC ? "mosaic" : "crop",
                 octocap_onnxruntime_version());
+  if (source && done)
+    std::printf("  per frame:            decoding waited for %.1f ms (the next frame decodes during this one's "
+                "detection); %.2f inferences, %.1f ms in the network; %.2f views followed by optical flow, %.1f ms\n",
+                read_ms / done, static_cast<double>(inferences) / done, inference_ms / done,
+                static_cast<double>(views_tracked) / done, track_ms / done);
   if (!o.ground_truth.empty()) {
     std::printf("  accuracy vs %s: MPJPE %.1f mm over %zu keypoint observations\n", o.ground_truth.c_str(),
                 acc.count ? acc.sum_mm / acc.count : NAN, acc.count);

@@ -43,6 +43,8 @@ namespace Octocap
     public enum StreamQos : int { Live = 0, Record = 1 }
     public enum PixelFormat : int { Rgb8 = 0, Bgr8 = 1, Rgba8 = 2 }
     public enum DetectMode : int { PerView = 0, Mosaic = 1, Crop = 2 }
+    /// <summary>Where the detector's network runs (octocap_device_t, 1.5).</summary>
+    public enum Device : int { Cpu = 0, Auto = 1, Cuda = 2 }
     public enum PersonPick : int { All = 0, Largest = 1, MostConfident = 2, NearestPrevious = 3 }
 
     /// <summary>The skeleton joints (octocap_joint_id_t): the paper's 14 and a root, then toes, heels and knuckles (1.4).</summary>
@@ -230,6 +232,10 @@ namespace Octocap
         public uint MaxPeople;
         public float MinConfidence;
         public uint ParallelViews;
+        /// <summary>(1.5) Views detected each frame, the others followed by optical flow; 0 = every view.</summary>
+        public uint ViewsPerFrame;
+        /// <summary>(1.5) Cpu (default), Auto (the GPU when there is one) or Cuda (the GPU or an error).</summary>
+        public Device Device;
 
         /// <summary>A shipped model's name ("movenet-thunder") or an .onnx path; null or "" for the mode's default.</summary>
         public void SetModel(string model)
@@ -273,6 +279,9 @@ namespace Octocap
         public uint KeypointCount;
         public Name32 Model;
         public DetectMode Mode;
+        public uint ViewsTracked;
+        public float TrackMs;
+        public Device Device;
     }
 
     /// <summary>octocap_subscriber_config_t. Start from <see cref="SubscriberConfig.Default"/>.</summary>

@@ -22,6 +22,8 @@ namespace Octocap.Tests
                     DetectorConfig detector = DetectorConfig.Default;
                     detector.SetModel("movenet-lightning");
                     detector.Threads = 1;
+                    Assert.AreEqual(0u, detector.ViewsPerFrame);
+                    Assert.AreEqual(Device.Cpu, detector.Device);
                     session.SetDetector(detector);
                     var pixels = new byte[128 * 72 * 4];  // the sample cameras are 1280x720: a tenth of that
                     fixed (byte* p = pixels)
@@ -41,6 +43,8 @@ namespace Octocap.Tests
                     Assert.AreEqual(Layout.Coco17, info.Layout);
                     Assert.AreEqual(17u, info.KeypointCount);
                     Assert.AreEqual("movenet-lightning", info.Model.ToString());
+                    Assert.AreEqual(0u, info.ViewsTracked);  // views_per_frame 0: every view detected
+                    Assert.AreEqual(Device.Cpu, info.Device);
                 }
             }
         }

@@ -83,7 +83,7 @@ extern "C" {
 
 /** Version of this header. The library's own is octocap_version_number(). */
 #define OCTOCAP_VERSION_MAJOR 1
-#define OCTOCAP_VERSION_MINOR 4
+#define OCTOCAP_VERSION_MINOR 5
 #define OCTOCAP_VERSION_PATCH 0
 /** MAJOR * 10000 + MINOR * 100 + PATCH: 10000 for 1.0.0. */
 #define OCTOCAP_VERSION_NUMBER (OCTOCAP_VERSION_MAJOR * 10000 + OCTOCAP_VERSION_MINOR * 100 + OCTOCAP_VERSION_PATCH)
@@ -472,6 +472,19 @@ enum octocap_person_pick_values {
   OCTOCAP_PICK_NEAREST_PREVIOUS = 3 /**< Closest to last frame's reprojected joints (else most confident). */
 };
 
+/** (1.5) Where the detector's network runs. */
+typedef int32_t octocap_device_t;
+/** Values of ::octocap_device_t. */
+enum octocap_device_values {
+  OCTOCAP_DEVICE_CPU = 0,  /**< ONNX Runtime's CPU kernels (every build). */
+  OCTOCAP_DEVICE_AUTO = 1, /**< An NVIDIA GPU through ONNX Runtime's CUDA execution provider when this ONNX Runtime
+                                has it and a GPU answers, else the CPU (logged as a warning, never an error);
+                                octocap_detect_info_t.device says which ran. */
+  OCTOCAP_DEVICE_CUDA = 2  /**< The GPU or nothing: creating the detector fails with ::OCTOCAP_ERROR_UNSUPPORTED
+                                and a message saying what is missing (the GPU build of ONNX Runtime, installed with
+                                `scripts/install-deps.sh --gpu`; CUDA libraries; a GPU). */
+};
+
 /** Detector configuration. Fill with octocap_detector_config_init() first. */
 typedef struct octocap_detector_config_t {
   uint32_t struct_size;            /**< sizeof(octocap_detector_config_t). */
@@ -489,6 +502,16 @@ typedef struct octocap_detector_config_t {
   float min_confidence;            /**< Keypoints below it do not place a person in a mosaic tile or a crop. Default 0.3. */
   uint32_t parallel_views;         /**< Per view and crop: views inferred at once, each on its share of the cores
                                         (when threads = 0). 0 = one per core (default); 1 = one after another. */
+  /* 1.5 */
+  uint32_t views_per_frame;        /**< Detection scheduling (per view and crop): at most this many views run the
+                                        network each frame; each other view follows its people from its previous
+                                        picture by optical flow (about 1 ms a view instead of tens). Views that cannot
+                                        be followed (nobody seen, no previous picture, a track that lost half its
+                                        keypoints) are detected anyway; of the rest, those detected longest ago. 0 =
+                                        every view every frame. Default 0. See the README's "Real time" for what each
+                                        value measures. */
+  octocap_device_t device;         /**< Where the network runs: ::OCTOCAP_DEVICE_CPU (default), ::OCTOCAP_DEVICE_AUTO or
+                                        ::OCTOCAP_DEVICE_CUDA. */
 } octocap_detector_config_t;
 
 /** Fills the first `struct_size` bytes of `cfg` with defaults and sets its struct_size: ::OCTOCAP_ERROR_STRUCT_SIZE
@@ -513,6 +536,10 @@ typedef struct octocap_detect_info_t {
   octocap_detect_mode_t mode;  /**< How the views were detected: the config's mode, except that a session solving
                                     several people with no model named runs the multi-person model on whole views
                                     (::OCTOCAP_DETECT_PER_VIEW: measured best there). */
+  /* 1.5 */
+  uint32_t views_tracked;      /**< Views followed by optical flow instead of detected (views_per_frame). */
+  float track_ms;              /**< Optical flow: preparing every view's picture, following the tracked views. */
+  octocap_device_t device;     /**< Where the network ran: ::OCTOCAP_DEVICE_CPU or ::OCTOCAP_DEVICE_CUDA. */
 } octocap_detect_info_t;
 
 /** A 2D detector on its own (no calibration): what `octocap detect` uses to write OpenPose JSON. */

@@ -37,6 +37,11 @@ DetectorConfig detector_config(const octocap_detector_config_t& given) {
   d.parallel_views = static_cast<int>(c.parallel_views);
   require_finite(c.min_confidence, "detector min_confidence");
   d.min_confidence = c.min_confidence;
+  if (c.views_per_frame > 256) throw Error(Errc::invalid_argument, "detector views_per_frame must be 0..256");
+  d.views_per_frame = static_cast<int>(c.views_per_frame);
+  if (c.device != OCTOCAP_DEVICE_CPU && c.device != OCTOCAP_DEVICE_AUTO && c.device != OCTOCAP_DEVICE_CUDA)
+    throw Error(Errc::invalid_argument, "detector device " + std::to_string(c.device) + " is not a known device");
+  d.device = static_cast<Device>(c.device);
   return d;
 }
 
@@ -59,9 +64,10 @@ std::vector<ImageView> image_views(const octocap_image_t* images, uint32_t count
 
 void fill_detect_info(const Detector& detector, octocap_detect_info_t* out) {
   require(out, "out");
-  // 1.2 callers' struct ends before `mode`.
+  // 1.2 callers' struct ends before `mode`, 1.3 and 1.4 callers' before `views_tracked`.
   const uint32_t size12 = static_cast<uint32_t>(offsetof(octocap_detect_info_t, mode));
-  if (out->struct_size != sizeof(octocap_detect_info_t) && out->struct_size != size12)
+  const uint32_t size14 = static_cast<uint32_t>(offsetof(octocap_detect_info_t, views_tracked));
+  if (out->struct_size != sizeof(octocap_detect_info_t) && out->struct_size != size12 && out->struct_size != size14)
     throw Error(Errc::struct_size, "octocap_detect_info_t.struct_size must be " + std::to_string(sizeof(octocap_detect_info_t)));
   const DetectTimings& t = detector.timings();
   out->total_ms = static_cast<float>(t.total_ms);
@@ -71,8 +77,12 @@ void fill_detect_info(const Detector& detector, octocap_detect_info_t* out) {
   out->layout = static_cast<octocap_layout_t>(detector.card().layout);
   out->keypoint_count = static_cast<uint32_t>(layout(detector.card().layout).keypoints.size());
   copy_name(out->model, sizeof out->model, detector.card().name);
-  if (out->struct_size == sizeof(octocap_detect_info_t))
-    out->mode = static_cast<octocap_detect_mode_t>(detector.config().mode);  // tmp
+  if (out->struct_size >= size14) out->mode = static_cast<octocap_detect_mode_t>(detector.config().mode);
+  if (out->struct_size == sizeof(octocap_detect_info_t)) {
+    out->views_tracked = static_cast<uint32_t>(t.views_tracked);
+    out->track_ms = static_cast<float>(t.track_ms);
+    out->device = static_cast<octocap_device_t>(detector.device());
+  }
 }
 
 }  // namespace octocap::capi
@@ -107,6 +117,8 @@ octocap_result_t octocap_detector_config_defaults(octocap_detector_config_t* c, 
     d.max_people = 4;
     d.min_confidence = 0.3f;
     d.parallel_views = 0;  // one view per core: every session has 2+ cameras (README "From images")
+    d.views_per_frame = 0;
+    d.device = OCTOCAP_DEVICE_CPU;  // a GPU only when asked: AUTO would load CUDA libraries a CPU user never needs
     capi::write_defaults(c, struct_size, d);
   });
 }

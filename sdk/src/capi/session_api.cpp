@@ -26,7 +26,8 @@ SessionConfig session_config(const octocap_session_config_t* given) {
   octocap_detector_config_t detector;
   octocap_detector_config_init(&detector);
   const bool nested_detector = given->struct_size == sizeof(capi::LegacySessionConfig03);
-  if (nested_detector) detector = reinterpret_cast<const capi::LegacySessionConfig03*>(given)->detector;
+  if (nested_detector)  // its 1.0 fields over today's defaults
+    std::memcpy(&detector, reinterpret_cast<const capi::LegacySessionConfig03*>(given)->detector, capi::kDetectorConfigSize10);
   if (given->struct_size < sizeof(octocap_session_config_t))
     log(LogLevel::info, "session config of an older program (struct_size " + std::to_string(given->struct_size) +
                             "): fields it does not have take their defaults");
@@ -123,7 +124,8 @@ octocap_result_t octocap_session_config_defaults(octocap_session_config_t* c, ui
       capi::LegacySessionConfig03 legacy{};
       d.struct_size = struct_size;
       std::memcpy(legacy.base, &d, sizeof legacy.base);
-      octocap_detector_config_init(&legacy.detector);
+      octocap_detector_config_defaults(reinterpret_cast<octocap_detector_config_t*>(legacy.detector),
+                                       capi::kDetectorConfigSize10);
       std::memcpy(c, &legacy, sizeof legacy);
       return;
     }

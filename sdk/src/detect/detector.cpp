@@ -123,14 +123,17 @@ Detector::Detector(const DetectorConfig& config) : config_(config) {
     throw Error(Errc::invalid_argument, "the mosaic needs a multi-person model that accepts any input size (one "
                                         "person per tile); " + card_.name + " is not one: use movenet-multipose");
   if (config.parallel_views < 0) throw Error(Errc::invalid_argument, "parallel views must be >= 0");
+  if (config.views_per_frame < 0) throw Error(Errc::invalid_argument, "views detected per frame must be >= 0");
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   parallel_ = config.mode == DetectMode::mosaic ? 1 : config.parallel_views == 0 ? cores : config.parallel_views;
   // Views in parallel share the cores: each inference gets its part unless the caller chose.
   const int intra = config.threads > 0 ? config.threads : parallel_ > 1 ? std::max(1, cores / parallel_) : 0;
-  model_ = std::make_unique<OrtModel>(path_, card_, intra);
+  model_ = std::make_unique<OrtModel>(path_, card_, intra, config.device != Device::cpu, config.device == Device::cuda);
 }
 
 Detector::~Detector() = default;
+
+Device Detector::device() const { return model_->on_gpu() ? Device::cuda : Device::cpu; }
 
 std::pair<int, int> Detector::input_size_for(double aspect) const {
   if (!card_.dynamic_size) return {card_.input_width, card_.input_height};
@@ -309,6 +312,58 @@ std::vector<DetectedPerson> Detector::detect_view(size_t v, const ImageView& vie
   return people;
 }
 
+std::vector<char> Detector::schedule(const std::vector<ImageView>& views) const {
+  std::vector<char> detect(views.size(), 0);
+  std::vector<size_t> followable;
+  int budget = config_.views_per_frame;
+  for (size_t v = 0; v < views.size(); ++v) {
+    if (absent(views[v])) continue;
+    int confident = 0;
+    for (const DetectedPerson& p : last_result_[v])
+      for (const Keypoint2D& k : p.keypoints) confident += k.confidence >= config_.min_confidence;
+    // Nobody to follow, no picture to follow from, or a track that lost half of what its detection found.
+    const bool must = !trackers_[v].follows(views[v]) || confident == 0 || 2 * confident < detected_keypoints_[v];
+    if (must)
+      detect[v] = 1, --budget;
+    else
+      followable.push_back(v);
+  }
+  // The views detected longest ago first (round robin), ties by view order.
+  std::stable_sort(followable.begin(), followable.end(),
+                   [&](size_t a, size_t b) { return frames_since_detect_[a] > frames_since_detect_[b]; });
+  for (size_t i = 0; i < followable.size() && budget > 0; ++i, --budget) detect[followable[i]] = 1;
+  return detect;
+}
+
+std::vector<DetectedPerson> Detector::detect_or_track(size_t v, const ImageView& view, bool scheduled, bool detect) {
+  if (scheduled) {
+    const auto t0 = Clock::now();
+    trackers_[v].advance(view);
+    const std::lock_guard<std::mutex> lock(timing_mutex_);
+    timings_.track_ms += ms_since(t0);
+  } else {
+    trackers_[v].reset();  // a later frame that schedules starts from a detection
+  }
+  if (detect) {
+    std::vector<DetectedPerson> people = detect_view(v, view);
+    frames_since_detect_[v] = 0;
+    detected_keypoints_[v] = 0;
+    for (const DetectedPerson& p : people)
+      for (const Keypoint2D& k : p.keypoints) detected_keypoints_[v] += k.confidence >= config_.min_confidence;
+    return people;
+  }
+  const auto t0 = Clock::now();
+  std::vector<DetectedPerson> people = trackers_[v].track(last_result_[v], config_.min_confidence);
+  ++frames_since_detect_[v];
+  // The crop follows the followed people, as it follows detected ones.
+  last_people_[v].clear();
+  for (const DetectedPerson& p : people) last_people_[v].push_back(p.keypoints);
+  const std::lock_guard<std::mutex> lock(timing_mutex_);
+  timings_.track_ms += ms_since(t0);
+  ++timings_.views_tracked;
+  return people;
+}
+
 std::vector<std::vector<DetectedPerson>> Detector::detect(const std::vector<ImageView>& views) {
   if (views.empty()) throw Error(Errc::invalid_argument, "no images");
   size_t present = 0;
@@ -327,6 +382,12 @@ std::vector<std::vector<DetectedPerson>> Detector::detect(const std::vector<Imag
     result.resize(views.size());
     last_people_.resize(views.size());
     frames_since_search_.resize(views.size(), 0);
+    trackers_.resize(views.size());
+    last_result_.resize(views.size());
+    frames_since_detect_.resize(views.size(), 0);
+    detected_keypoints_.resize(views.size(), 0);
+    const bool scheduled = config_.views_per_frame > 0 && present > static_cast<size_t>(config_.views_per_frame);
+    const std::vector<char> detect_now = scheduled ? schedule(views) : std::vector<char>(views.size(), 1);
     // Views are independent here: up to parallel_ of them at once, each writing only its own slots.
     std::atomic<size_t> next{0};
     std::exception_ptr failure;
@@ -334,7 +395,10 @@ std::vector<std::vector<DetectedPerson>> Detector::detect(const std::vector<Imag
     auto worker = [&] {
       for (size_t v = next++; v < views.size(); v = next++) {
         try {
-          if (!absent(views[v])) result[v] = detect_view(v, views[v]);
+          if (absent(views[v]))
+            trackers_[v].reset();  // nothing to follow from next frame
+          else
+            result[v] = detect_or_track(v, views[v], scheduled, detect_now[v] != 0);
         } catch (...) {
           const std::lock_guard<std::mutex> lock(failure_mutex);
           if (!failure) failure = std::current_exception();
@@ -359,6 +423,7 @@ std::vector<std::vector<DetectedPerson>> Detector::detect(const std::vector<Imag
                  people.end());
   for (size_t v = 0; v < result.size(); ++v)
     pick_people(result[v], config_.pick, first_hint(v), config_.max_people, config_.min_confidence);
+  if (config_.mode != DetectMode::mosaic) last_result_ = result;
   timings_.total_ms = ms_since(t0);
   return result;
 }

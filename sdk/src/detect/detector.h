@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "detect/decoders.h"
+#include "detect/flow_tracker.h"
 #include "detect/image.h"
 #include "detect/model_card.h"
 #include "detect/mosaic.h"
@@ -19,6 +20,8 @@ namespace octocap {
 class OrtModel;
 
 enum class DetectMode : int { per_view = 0, mosaic = 1, crop = 2 };
+// Where the network runs (octocap_device_t): auto is the GPU when there is one, else the CPU.
+enum class Device : int { cpu = 0, automatic = 1, cuda = 2 };
 
 struct DetectorConfig {
   std::string model;  // a path to a .onnx (its card beside it) or a shipped model's name; empty: the mode's default
@@ -34,11 +37,19 @@ struct DetectorConfig {
   // turns it on when it solves several people. Off: one person, as always.
   bool find_new_people = false;
   int new_people_every = 10;
+  // Detection scheduling (per view and crop): at most this many views run the network each frame, the others follow
+  // their people from their last picture by optical flow (FlowTracker). Views that cannot be followed (no person,
+  // no last picture, a track that lost half its keypoints) are detected anyway; of the rest, the views detected
+  // longest ago. 0: every view every frame.
+  int views_per_frame = 0;
+  Device device = Device::cpu;
 };
 
 struct DetectTimings {
   double total_ms = 0, preprocess_ms = 0, inference_ms = 0;
+  double track_ms = 0;  // optical flow: the pictures made ready (every view) and the tracked views followed
   int inferences = 0;
+  int views_tracked = 0;  // views followed by optical flow instead of detected
 };
 
 // Whether this CPU has VNNI (AVX-512 VNNI or AVX-VNNI): the integer dot products INT8 models need to be fast; without
@@ -68,6 +79,8 @@ class Detector {
   const DetectorConfig& config() const { return config_; }
   const std::string& model_path() const { return path_; }
   const DetectTimings& timings() const { return timings_; }
+  // Where the network runs: cpu or cuda (automatic resolved when the model was loaded).
+  Device device() const;
 
  private:
   // The network on a prepared input (preparing it began at t0: the timings count it), in input pixels.
@@ -79,6 +92,10 @@ class Detector {
   std::vector<DetectedPerson> detect_view(size_t v, const ImageView& view);
   std::vector<std::vector<DetectedPerson>> detect_mosaic(const std::vector<ImageView>& views);
   std::pair<int, int> input_size_for(double aspect) const;
+  // Which views run the network this frame (views_per_frame): 1 = detect, 0 = follow by optical flow.
+  std::vector<char> schedule(const std::vector<ImageView>& views) const;
+  // A view's people this frame: detected, or followed from last frame's by optical flow.
+  std::vector<DetectedPerson> detect_or_track(size_t v, const ImageView& view, bool scheduled, bool detect);
 
   DetectorConfig config_;
   std::string path_;
@@ -91,6 +108,12 @@ class Detector {
   // The crop mode's fallback when no hint was given: last frame's people (their boxes, and their turn for a turned crop).
   std::vector<std::vector<Person2D>> last_people_;
   std::vector<int> frames_since_search_;       // per view, find_new_people
+  // Detection scheduling, per view: the pictures flow starts from, last frame's people (detected or followed), how
+  // many frames since the view was detected, and how many confident keypoints that detection had.
+  std::vector<FlowTracker> trackers_;
+  std::vector<std::vector<DetectedPerson>> last_result_;
+  std::vector<int> frames_since_detect_;
+  std::vector<int> detected_keypoints_;
   DetectTimings timings_;
 };
 

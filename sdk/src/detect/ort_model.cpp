@@ -5,6 +5,7 @@
 #include <mutex>
 
 #include "core/error.h"
+#include "core/log.h"
 
 #ifdef OCTOCAP_HAVE_ONNXRUNTIME
 // Manual init: the C++ wrapper otherwise asks for the API at static-initialisation time and crashes (null
@@ -52,7 +53,17 @@ struct OrtModel::Impl {
   ONNXTensorElementDataType input_type = ONNX_TENSOR_ELEMENT_DATA_TYPE_FLOAT;
 };
 
-OrtModel::OrtModel(const std::string& path, const ModelCard& card, int intra_threads)
+// Asks ONNX Runtime to run the session on the first CUDA GPU. Throws Ort::Exception when it cannot: a CPU-only
+// library ("not enabled in this build"), the provider library or a CUDA library it needs missing, no GPU.
+static void append_cuda(Ort::SessionOptions& options) {
+  const OrtApi& api = ort_api();
+  OrtCUDAProviderOptionsV2* cuda = nullptr;
+  Ort::ThrowOnError(api.CreateCUDAProviderOptions(&cuda));
+  std::unique_ptr<OrtCUDAProviderOptionsV2, void (*)(OrtCUDAProviderOptionsV2*)> owned(cuda, api.ReleaseCUDAProviderOptions);
+  Ort::ThrowOnError(api.SessionOptionsAppendExecutionProvider_CUDA_V2(options, cuda));
+}
+
+OrtModel::OrtModel(const std::string& path, const ModelCard& card, int intra_threads, bool gpu, bool gpu_required)
     : card_(card) {
   // The API first: an Impl (its Ort::Session) must never be destroyed before the API table exists, or its
   // destructor calls through a null table (the first detector of a process, given a card without its model).
@@ -61,11 +72,33 @@ OrtModel::OrtModel(const std::string& path, const ModelCard& card, int intra_thr
   if (stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) throw Error(Errc::io, "model file not found: " + path);
   impl_ = std::make_unique<Impl>();
   try {
-    Ort::SessionOptions options;
-    options.SetIntraOpNumThreads(intra_threads);
-    options.SetInterOpNumThreads(1);
-    options.SetGraphOptimizationLevel(GraphOptimizationLevel::ORT_ENABLE_ALL);
-    impl_->session = Ort::Session(env, path.c_str(), options);
+    auto make_options = [&] {
+      Ort::SessionOptions options;
+      options.SetIntraOpNumThreads(intra_threads);
+      options.SetInterOpNumThreads(1);
+      options.SetGraphOptimizationLevel(GraphOptimizationLevel::ORT_ENABLE_ALL);
+      return options;
+    };
+    std::string gpu_failure;
+    if (gpu) {
+      // The GPU may fail when the provider is appended (no CUDA provider, a CUDA library missing) or only when the
+      // session starts on it (no device): either way the CPU session below, unless the GPU was required.
+      try {
+        Ort::SessionOptions options = make_options();
+        append_cuda(options);
+        impl_->session = Ort::Session(env, path.c_str(), options);
+        on_gpu_ = true;
+      } catch (const Ort::Exception& e) {
+        gpu_failure = e.what();
+      }
+      if (!on_gpu_ && gpu_required)
+        throw Error(Errc::unsupported, "no GPU for model " + card.name + ": ONNX Runtime " +
+                                           OrtGetApiBase()->GetVersionString() + " says: " + gpu_failure +
+                                           " (the GPU build of ONNX Runtime comes with scripts/install-deps.sh --gpu)");
+      if (!on_gpu_)
+        log(LogLevel::warning, "model " + card.name + " runs on the CPU: no GPU (" + gpu_failure + ")");
+    }
+    if (!on_gpu_) impl_->session = Ort::Session(env, path.c_str(), make_options());
     Ort::AllocatorWithDefaultOptions alloc;
     if (impl_->session.GetInputCount() != 1)
       throw Error(Errc::invalid_argument, path + ": a pose model needs exactly one input, this one has " +
@@ -179,7 +212,7 @@ std::string onnxruntime_version() {
   throw Error(Errc::unsupported, "this octocap was built without ONNX Runtime (OCTOCAP_WITH_ONNX=OFF)");
 }
 struct OrtModel::Impl {};
-OrtModel::OrtModel(const std::string&, const ModelCard& card, int) : card_(card) { onnxruntime_version(); }
+OrtModel::OrtModel(const std::string&, const ModelCard& card, int, bool, bool) : card_(card) { onnxruntime_version(); }
 OrtModel::~OrtModel() = default;
 std::vector<Tensor> OrtModel::run(const RgbCanvas&) { return {}; }
 

@@ -17,9 +17,10 @@ std::string onnxruntime_version();
 
 class OrtModel {
  public:
-  // intra_threads: ONNX Runtime's intra-op threads (0 = its default, all cores).
+  // intra_threads: ONNX Runtime's intra-op threads (0 = its default, all cores). gpu: try ONNX Runtime's CUDA
+  // execution provider first; required: fail (Error(unsupported), saying why) rather than fall back to the CPU.
   // Throws Error(io) for a missing file, Error(invalid_argument) for a model whose input does not fit the card.
-  OrtModel(const std::string& path, const ModelCard& card, int intra_threads);
+  OrtModel(const std::string& path, const ModelCard& card, int intra_threads, bool gpu = false, bool gpu_required = false);
   ~OrtModel();
   OrtModel(const OrtModel&) = delete;
   OrtModel& operator=(const OrtModel&) = delete;
@@ -28,10 +29,13 @@ class OrtModel {
   // models) and returns every output as float. Safe to call from several threads at once.
   std::vector<Tensor> run(const RgbCanvas& canvas);
   const ModelCard& card() const { return card_; }
+  // Whether the network runs on the GPU (the CUDA execution provider took it).
+  bool on_gpu() const { return on_gpu_; }
 
  private:
   struct Impl;
   ModelCard card_;
+  bool on_gpu_ = false;
   std::unique_ptr<Impl> impl_;
 };
 
