@@ -29,8 +29,9 @@ const std::string kRoot = OCTOCAP_SOURCE_DIR;
 const std::string kVideos = kRoot + "/.cache/pose2sim-0.10.49/Demo_SinglePerson/videos/";
 const std::string kLab = kRoot + "/.cache/pose2sim-0.4.15/Demo/calibration/Calib_qualisys.toml";
 
+// views_per_frame: detection scheduling (0: every view detected every set).
 void row(const char* what, const octocap::Calibration& calib, const std::vector<std::string>& cameras,
-         const char* model, double seconds) {
+         const char* model, double seconds, uint32_t views_per_frame = 0) {
   octocap_live_config_t cfg;
   octocap_live_config_init(&cfg);
   octocap_session_config_t s;
@@ -40,6 +41,7 @@ void row(const char* what, const octocap::Calibration& calib, const std::vector<
   octocap_detector_config_t d;
   octocap_detector_config_init(&d);
   std::snprintf(d.model, sizeof d.model, "%s", model);
+  d.views_per_frame = views_per_frame;
   live.set_detector(d);
   live.start();
   const auto start = std::chrono::steady_clock::now();
@@ -54,7 +56,9 @@ void row(const char* what, const octocap::Calibration& calib, const std::vector<
     grabbed += live.camera(c).grabbed;
     dropped += live.camera(c).dropped;
   }
-  std::printf("| %-34s | %-17s | %5.1f | %4.0f %% | %6.1f | %6.1f | %5.2f | %5.0f / %5.0f | %3.0f %% |\n", what, model,
+  char label[96];
+  std::snprintf(label, sizeof label, views_per_frame ? "%s, %u detected a set" : "%s", model, views_per_frame);
+  std::printf("| %-34s | %-17s | %5.1f | %4.0f %% | %6.1f | %6.1f | %5.2f | %5.0f / %5.0f | %3.0f %% |\n", what, label,
               static_cast<double>(st.frame_sets) / elapsed,
               st.frame_sets ? 100.0 * static_cast<double>(st.sets_incomplete) / static_cast<double>(st.frame_sets) : 0.0,
               st.capture_ms, st.detect_ms, st.solve_ms, st.latency_p50_ms, st.latency_p99_ms,
@@ -140,8 +144,9 @@ int main(int argc, char** argv) {
   const octocap::Calibration lab = octocap::Calibration::load(kLab);
   if (argc == 3 && std::strcmp(argv[1], "--soak") == 0) return soak(lab, std::atof(argv[2]));
   const bool rtsp_only = argc == 2 && std::strcmp(argv[1], "--rtsp") == 0;
-  if (argc > 1 && !rtsp_only) {
-    std::fprintf(stderr, "usage: octocap_bench_live [--rtsp | --soak SECONDS]\n");
+  const bool scheduling = argc == 2 && std::strcmp(argv[1], "--scheduling") == 0;
+  if (argc > 1 && !rtsp_only && !scheduling) {
+    std::fprintf(stderr, "usage: octocap_bench_live [--rtsp | --scheduling | --soak SECONDS]\n");
     return 2;
   }
   std::printf("# octocap live engine (this machine, default threads; the detector decides the rate)\n\n");
@@ -161,6 +166,11 @@ int main(int argc, char** argv) {
   };
   if (rtsp_only) {
     rtsp_rows();
+    return 0;
+  }
+  if (scheduling) {  // detection scheduling: views followed by optical flow between their detections
+    for (const char* model : {"movenet-thunder", "movenet-lightning"})
+      for (uint32_t views : {0u, 2u, 1u}) row("4 video files, 1088x1920 @ 60", lab, files, model, 10, views);
     return 0;
   }
   for (const char* model : {"movenet-lightning", "movenet-thunder"})

@@ -10,6 +10,11 @@ if(NOT ONNXRUNTIME_INCLUDE_DIR OR NOT ONNXRUNTIME_LIBRARY)
                       "(or configure with -DOCTOCAP_WITH_ONNX=OFF to build without 2D detection)")
 endif()
 get_filename_component(ONNXRUNTIME_LIBRARY "${ONNXRUNTIME_LIBRARY}" REALPATH)
+# Another runtime fetched into the directory (a new version, the GPU build of scripts/install-deps.sh --gpu) moves the
+# soname link: configure again, so that the build links and installs the library that is there now.
+if(EXISTS "${OCTOCAP_ONNXRUNTIME_DIR}/lib/libonnxruntime.so.1")
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${OCTOCAP_ONNXRUNTIME_DIR}/lib/libonnxruntime.so.1")
+endif()
 add_library(onnxruntime::onnxruntime SHARED IMPORTED)
 set_target_properties(onnxruntime::onnxruntime PROPERTIES
   IMPORTED_LOCATION "${ONNXRUNTIME_LIBRARY}"

@@ -13,7 +13,7 @@ ensure_deps() {
     dpkg -s "$pkg" >/dev/null 2>&1 || { missing=1; break; }
   done
   command -v npm >/dev/null 2>&1 || missing=1
-  [ -f "$ROOT/.cache/onnxruntime/.complete-1.32.0" ] || missing=1
+  ls "$ROOT"/.cache/onnxruntime/.complete-*1.31.1 >/dev/null 2>&1 || missing=1  # the CPU or the GPU (--gpu) runtime
   if [ "$missing" = 1 ]; then
     echo "== installing dependencies (scripts/install-deps.sh)" >&2
     bash "$ROOT/scripts/install-deps.sh"

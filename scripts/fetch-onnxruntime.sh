@@ -1,19 +1,33 @@
 #!/usr/bin/env bash
 # ONNX Runtime for the 2D detector, from package registries only (nothing is fetched at run time):
-#  - the library: libonnxruntime.so.1.32.0 out of PyPI's `onnxruntime` 1.32.0 wheel (MIT). The wheel's shared
+#  - the library: libonnxruntime.so.1.31.1 out of PyPI's `onnxruntime` 1.31.1 wheel (MIT). The wheel's shared
 #    library is the plain C/C++ runtime; Python is not needed to use it. Debian 12 has no ONNX Runtime package.
 #  - the headers: Debian trixie's `libonnxruntime-dev` 1.21.0 (MIT), the official C/C++ API headers. Fetched with
 #    `apt-get download` through a throw-away source list and state, so the system's apt setup is untouched.
 # Headers older than the library are safe: a library serves every older API version, and octocap asks for the
 # headers' ORT_API_VERSION at run time (a clear error if the library were older).
 # Result: .cache/onnxruntime/{include,lib} (not committed); CMake's OCTOCAP_ONNXRUNTIME_DIR points there.
+#
+# --gpu (opt-in, about 2 GB of downloads a CPU user never pays for): the library from PyPI's `onnxruntime-gpu` wheel
+# instead (its CPU kernels are the same; it adds the CUDA execution provider), with the CUDA 13 and cuDNN 9 libraries
+# it needs from NVIDIA's PyPI wheels (its `cuda` and `cudnn` extras), all in .cache/onnxruntime/lib. Same soname:
+# nothing is rebuilt; a detector with device AUTO or CUDA then runs on the GPU (octocap preloads those libraries from
+# there), and falls back to the CPU (AUTO) where no GPU answers. Needs an NVIDIA driver; nothing else.
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 DEST="${OCTOCAP_ONNXRUNTIME_DIR:-$ROOT/.cache/onnxruntime}"
-ORT_VERSION=1.32.0
+# The CPU and GPU wheels at one version: the library exports versioned symbols (VERS_1.31.1), so a program linked
+# against one runs on the other and --gpu swaps the runtime without a rebuild. 1.31.1 is the newest onnxruntime-gpu
+# on PyPI (the CPU wheel has a 1.32.0, which the GPU build would not serve).
+ORT_VERSION=1.31.1
+ORT_GPU_VERSION=$ORT_VERSION
 HEADERS_DEB_VERSION=1.21.0+dfsg-1
+GPU=0
+if [ "${1:-}" = "--gpu" ]; then GPU=1; fi
 MARKER="$DEST/.complete-$ORT_VERSION"
-if [ -f "$MARKER" ]; then exit 0; fi
+GPU_MARKER="$DEST/.complete-gpu-$ORT_GPU_VERSION"
+if [ -f "$GPU_MARKER" ]; then exit 0; fi        # the GPU runtime serves the CPU too
+if [ "$GPU" = 0 ] && [ -f "$MARKER" ]; then exit 0; fi
 TMP="$(mktemp -d)"
 trap 'rm -rf "$TMP"' EXIT
 PIP="pip3"
@@ -41,6 +55,34 @@ python3 "$ROOT/scripts/extract-from-wheel.py" "$TMP"/onnxruntime-"$ORT_VERSION"-
   "onnxruntime/capi/libonnxruntime.so.$ORT_VERSION"
 ln -sf "libonnxruntime.so.$ORT_VERSION" "$DEST/lib/libonnxruntime.so.1"
 ln -sf "libonnxruntime.so.1" "$DEST/lib/libonnxruntime.so"
+if [ "$GPU" = 1 ]; then
+  echo "== fetching onnxruntime-gpu[cuda,cudnn]==$ORT_GPU_VERSION (PyPI: ONNX Runtime MIT, NVIDIA's CUDA and cuDNN wheels under NVIDIA's licences)" >&2
+  $PIP download --quiet --only-binary=:all: --python-version 3.11 --implementation cp \
+    --platform manylinux_2_28_x86_64 --platform manylinux_2_27_x86_64 --platform manylinux2014_x86_64 \
+    --dest "$TMP/gpu" "onnxruntime-gpu[cuda,cudnn]==$ORT_GPU_VERSION"
+  # Over the CPU library of the same version and name: a build made against that one links and runs on this one.
+  python3 "$ROOT/scripts/extract-from-wheel.py" "$TMP"/gpu/onnxruntime_gpu-*.whl "$DEST/lib" --flatten \
+    "onnxruntime/capi/libonnxruntime.so.$ORT_GPU_VERSION" "onnxruntime/capi/libonnxruntime_providers_shared.so" \
+    "onnxruntime/capi/libonnxruntime_providers_cuda.so"
+  ln -sf "libonnxruntime.so.$ORT_GPU_VERSION" "$DEST/lib/libonnxruntime.so.1"
+  ln -sf "libonnxruntime.so.1" "$DEST/lib/libonnxruntime.so"
+  # Every shared library of NVIDIA's wheels (nvidia/<part>/lib/lib*.so.N), flat beside it.
+  for wheel in "$TMP"/gpu/nvidia_*.whl; do
+    python3 - "$wheel" "$DEST/lib" <<'PY'
+import os, sys, zipfile
+with zipfile.ZipFile(sys.argv[1]) as z:
+    for name in z.namelist():
+        base = os.path.basename(name)
+        if name.startswith("nvidia/") and "/lib/" in name and base.startswith("lib") and ".so" in base:
+            with z.open(name) as src, open(os.path.join(sys.argv[2], base), "wb") as dst:
+                dst.write(src.read())
+PY
+  done
+  ls "$TMP"/gpu/*.whl | xargs -n1 basename > "$DEST/GPU-WHEELS.txt"
+  touch "$GPU_MARKER"
+  echo "== ONNX Runtime $ORT_GPU_VERSION with CUDA ready in $DEST (wheels listed in GPU-WHEELS.txt)" >&2
+  exit 0
+fi
 cat > "$DEST/SOURCES.txt" <<TXT
 lib/libonnxruntime.so.$ORT_VERSION  from PyPI onnxruntime==$ORT_VERSION (manylinux_2_28_x86_64 wheel), MIT licence
 include/*.h                        from Debian trixie libonnxruntime-dev $HEADERS_DEB_VERSION, MIT licence

@@ -2,6 +2,8 @@
 # Installs every system dependency octocap's build and tests need on a fresh Debian 12 (bookworm).
 # The one place that installs anything; CI and the demo call it. Safe to run twice.
 set -euo pipefail
+# Usage: scripts/install-deps.sh [--gpu]
+if [ "${1:-}" = "--gpu" ]; then OCTOCAP_GPU=1; elif [ -n "${1:-}" ]; then echo "usage: $0 [--gpu]" >&2; exit 2; fi
 
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
@@ -34,4 +36,5 @@ if ! command -v npm >/dev/null 2>&1; then
   $SUDO apt-get install -y -q --no-install-recommends nodejs npm
 fi
 # ONNX Runtime is not packaged for Debian 12: library from PyPI, headers from Debian trixie (see the script).
-bash "$(dirname "$0")/fetch-onnxruntime.sh"
+# --gpu: its GPU build with the CUDA and cuDNN libraries it needs (about 2 GB; NVIDIA driver required).
+bash "$(dirname "$0")/fetch-onnxruntime.sh" ${OCTOCAP_GPU:+--gpu}

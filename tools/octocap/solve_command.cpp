@@ -83,7 +83,8 @@ int solve(const SolveOptions& o) {
     source = std::make_unique<ImageSource>(o.images);
     views = static_cast<uint32_t>(source->camera_count());
     frames = static_cast<uint32_t>(source->frame_count());
-    if (layout == OCTOCAP_LAYOUT_AUTO) layout = octocap::Detector(o.detector.config()).info().layout;  // the model's
+    if (layout == OCTOCAP_LAYOUT_AUTO)  // the model's, from its card (the network is loaded once, by the session)
+      octocap::check(octocap_model_layout(o.detector.config().model, &layout), "--model");
   } else {
     rec.emplace(o.keypoints, layout);
     if (!o.sync.empty()) {

@@ -565,6 +565,10 @@ OCTOCAP_API octocap_result_t octocap_detector_keypoints(const octocap_detector_t
                                                         uint32_t capacity, uint32_t* count);
 /** Figures of the last run (model, layout, timings). */
 OCTOCAP_API octocap_result_t octocap_detector_info(const octocap_detector_t* detector, octocap_detect_info_t* out);
+/** (1.5) The keypoint layout a model gives (a shipped name, or an .onnx path with its card beside it), read from its
+ *  model card without loading the network: what a session solving that model's detections is created with. An empty
+ *  name is the default model. Errors: OCTOCAP_ERROR_IO (no card), OCTOCAP_ERROR_PARSE (a malformed card). */
+OCTOCAP_API octocap_result_t octocap_model_layout(const char* model, octocap_layout_t* layout);
 /** Version of the ONNX Runtime library in use ("1.32.0"), or "" when this build has none (or the library is
  *  older than octocap's headers). The string stays valid until the next call on the same thread. */
 OCTOCAP_API const char* octocap_onnxruntime_version(void);

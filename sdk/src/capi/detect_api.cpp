@@ -171,6 +171,15 @@ octocap_result_t octocap_detector_info(const octocap_detector_t* d, octocap_dete
   });
 }
 
+octocap_result_t octocap_model_layout(const char* model, octocap_layout_t* layout) {
+  return capi::guard([&] {
+    capi::require(model, "model");
+    capi::require(layout, "layout");
+    const ModelCard card = read_model_card(model_card_path(resolve_model_path(model, DetectMode::crop)));
+    *layout = static_cast<octocap_layout_t>(card.layout);
+  });
+}
+
 const char* octocap_onnxruntime_version(void) {
   static thread_local std::string version;
   try {

@@ -345,12 +345,8 @@ std::vector<DetectedPerson> Detector::detect_or_track(size_t v, const ImageView&
     trackers_[v].reset();  // a later frame that schedules starts from a detection
   }
   if (detect) {
-    std::vector<DetectedPerson> people = detect_view(v, view);
     frames_since_detect_[v] = 0;
-    detected_keypoints_[v] = 0;
-    for (const DetectedPerson& p : people)
-      for (const Keypoint2D& k : p.keypoints) detected_keypoints_[v] += k.confidence >= config_.min_confidence;
-    return people;
+    return detect_view(v, view);
   }
   const auto t0 = Clock::now();
   std::vector<DetectedPerson> people = trackers_[v].track(last_result_[v], config_.min_confidence);
@@ -395,10 +391,9 @@ std::vector<std::vector<DetectedPerson>> Detector::detect(const std::vector<Imag
     auto worker = [&] {
       for (size_t v = next++; v < views.size(); v = next++) {
         try {
-          if (absent(views[v]))
-            trackers_[v].reset();  // nothing to follow from next frame
-          else
-            result[v] = detect_or_track(v, views[v], scheduled, detect_now[v] != 0);
+          // A view without a picture this set (a live camera that lagged) keeps its last picture and people: the
+          // next picture is followed from them across the gap (the way-back check drops what moved too far).
+          if (!absent(views[v])) result[v] = detect_or_track(v, views[v], scheduled, detect_now[v] != 0);
         } catch (...) {
           const std::lock_guard<std::mutex> lock(failure_mutex);
           if (!failure) failure = std::current_exception();
@@ -423,7 +418,17 @@ std::vector<std::vector<DetectedPerson>> Detector::detect(const std::vector<Imag
                  people.end());
   for (size_t v = 0; v < result.size(); ++v)
     pick_people(result[v], config_.pick, first_hint(v), config_.max_people, config_.min_confidence);
-  if (config_.mode != DetectMode::mosaic) last_result_ = result;
+  // What each view reports, kept to follow from; and, for the views detected now, how many keypoints the detection
+  // gave (as picked: a track is judged against what was passed on, not against people dropped).
+  if (config_.mode != DetectMode::mosaic)
+    for (size_t v = 0; v < result.size(); ++v) {
+      if (absent(views[v])) continue;
+      last_result_[v] = result[v];
+      if (frames_since_detect_[v] != 0) continue;
+      detected_keypoints_[v] = 0;
+      for (const DetectedPerson& p : result[v])
+        for (const Keypoint2D& k : p.keypoints) detected_keypoints_[v] += k.confidence >= config_.min_confidence;
+    }
   timings_.total_ms = ms_since(t0);
   return result;
 }

@@ -1,8 +1,12 @@
 #include "detect/ort_model.h"
 
+#include <dirent.h>
+#include <dlfcn.h>
 #include <sys/stat.h>
 
 #include <mutex>
+#include <string>
+#include <vector>
 
 #include "core/error.h"
 #include "core/log.h"
@@ -53,10 +57,67 @@ struct OrtModel::Impl {
   ONNXTensorElementDataType input_type = ONNX_TENSOR_ELEMENT_DATA_TYPE_FLOAT;
 };
 
+// The GPU build of ONNX Runtime (scripts/fetch-onnxruntime.sh --gpu) keeps the CUDA libraries its CUDA provider needs
+// (cuBLAS, cuDNN, ... from NVIDIA's PyPI wheels) beside libonnxruntime. The provider finds them only on the loader's
+// path, so they are loaded here first, from that directory, the way ONNX Runtime's Python package preloads them:
+// nobody has to set LD_LIBRARY_PATH. Some need others: passes until none more loads. Nothing there: nothing done.
+// The directory the loaded libonnxruntime is in ("" when unknown), with its trailing slash.
+static std::string ort_directory() {
+  Dl_info info{};
+  if (!dladdr(reinterpret_cast<void*>(&OrtGetApiBase), &info) || !info.dli_fname) return "";
+  const std::string path = info.dli_fname;
+  return path.substr(0, path.find_last_of('/') + 1);
+}
+
+// Why the CUDA provider is not there, in the user's terms, when it can be told: ONNX Runtime's own message is only
+// "Failed to load shared library".
+static std::string cuda_diagnosis() {
+  const std::string dir = ort_directory();
+  if (dir.empty()) return "";
+  const std::string provider = dir + "libonnxruntime_providers_cuda.so";
+  struct stat st {};
+  if (stat(provider.c_str(), &st) != 0) return "the ONNX Runtime in " + dir + " is the CPU build";
+  void* handle = dlopen(provider.c_str(), RTLD_LAZY | RTLD_LOCAL);
+  if (!handle) {
+    const char* why = dlerror();
+    return std::string("its CUDA provider cannot load (") + (why ? why : "?") + "; libcuda.so.1 comes with the NVIDIA driver)";
+  }
+  dlclose(handle);
+  return "";
+}
+
+static void preload_cuda_libraries() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    const std::string dir = ort_directory();
+    if (dir.empty()) return;
+    std::vector<std::string> pending;
+    if (DIR* d = opendir(dir.c_str())) {
+      while (const dirent* e = readdir(d)) {
+        const std::string name = e->d_name;
+        if ((name.rfind("libcu", 0) == 0 || name.rfind("libnv", 0) == 0) && name.find(".so") != std::string::npos)
+          pending.push_back(dir + name);
+      }
+      closedir(d);
+    }
+    for (bool progress = true; progress && !pending.empty();) {
+      progress = false;
+      for (auto it = pending.begin(); it != pending.end();)
+        if (dlopen(it->c_str(), RTLD_NOW | RTLD_GLOBAL)) {
+          it = pending.erase(it);
+          progress = true;
+        } else {
+          ++it;
+        }
+    }
+  });
+}
+
 // Asks ONNX Runtime to run the session on the first CUDA GPU. Throws Ort::Exception when it cannot: a CPU-only
 // library ("not enabled in this build"), the provider library or a CUDA library it needs missing, no GPU.
 static void append_cuda(Ort::SessionOptions& options) {
   const OrtApi& api = ort_api();
+  preload_cuda_libraries();
   OrtCUDAProviderOptionsV2* cuda = nullptr;
   Ort::ThrowOnError(api.CreateCUDAProviderOptions(&cuda));
   std::unique_ptr<OrtCUDAProviderOptionsV2, void (*)(OrtCUDAProviderOptionsV2*)> owned(cuda, api.ReleaseCUDAProviderOptions);
@@ -89,11 +150,12 @@ OrtModel::OrtModel(const std::string& path, const ModelCard& card, int intra_thr
         impl_->session = Ort::Session(env, path.c_str(), options);
         on_gpu_ = true;
       } catch (const Ort::Exception& e) {
-        gpu_failure = e.what();
+        const std::string diagnosis = cuda_diagnosis();
+        gpu_failure = diagnosis.empty() ? e.what() : diagnosis + "; ONNX Runtime says: " + e.what();
       }
       if (!on_gpu_ && gpu_required)
-        throw Error(Errc::unsupported, "no GPU for model " + card.name + ": ONNX Runtime " +
-                                           OrtGetApiBase()->GetVersionString() + " says: " + gpu_failure +
+        throw Error(Errc::unsupported, "no GPU for model " + card.name + " (ONNX Runtime " +
+                                           OrtGetApiBase()->GetVersionString() + "): " + gpu_failure +
                                            " (the GPU build of ONNX Runtime comes with scripts/install-deps.sh --gpu)");
       if (!on_gpu_)
         log(LogLevel::warning, "model " + card.name + " runs on the CPU: no GPU (" + gpu_failure + ")");
