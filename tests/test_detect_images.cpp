@@ -41,6 +41,18 @@ std::vector<cv::VideoCapture> open_demo_videos() {
   return videos;
 }
 
+// The next picture of every video, and the views the C ABI takes of them (borrowing `images`).
+std::vector<octocap_image_t> read_views(std::vector<cv::VideoCapture>& videos, std::vector<cv::Mat>& images) {
+  images.resize(videos.size());
+  std::vector<octocap_image_t> views;
+  for (size_t c = 0; c < videos.size(); ++c) {
+    REQUIRE(videos[c].read(images[c]));
+    views.push_back({images[c].data, static_cast<uint32_t>(images[c].cols), static_cast<uint32_t>(images[c].rows),
+                     static_cast<uint32_t>(images[c].step[0]), OCTOCAP_PIXELS_BGR8});
+  }
+  return views;
+}
+
 double median(std::vector<double> v) {
   REQUIRE(!v.empty());
   std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
@@ -64,13 +76,8 @@ TEST_CASE("solving real multi-camera videos from images matches Pose2Sim's repro
     const int frames = 12;
     testing::Pose2SimReference score(kDemo + "/opensim/Balancing_for_IK.trc", OCTOCAP_LAYOUT_COCO_17);
     for (int f = 0; f < frames; ++f) {
-      std::vector<cv::Mat> images(4);
-      std::vector<octocap_image_t> views;
-      for (int c = 0; c < 4; ++c) {
-        REQUIRE(videos[c].read(images[c]));
-        views.push_back({images[c].data, static_cast<uint32_t>(images[c].cols), static_cast<uint32_t>(images[c].rows),
-                         static_cast<uint32_t>(images[c].step[0]), OCTOCAP_PIXELS_BGR8});
-      }
+      std::vector<cv::Mat> images;
+      const std::vector<octocap_image_t> views = read_views(videos, images);
       REQUIRE(octocap_session_solve_images(s.get(), views.data(), 4, f * 16667) == OCTOCAP_OK);
       uint32_t n = 0;
       REQUIRE(octocap_session_detections(s.get(), 0, nullptr, 0, &n) == OCTOCAP_OK);
@@ -106,13 +113,8 @@ TEST_CASE("detection scheduling on the real videos: two views detected a frame, 
   std::vector<int> since_detected(4, 0);
   size_t tracked = 0;
   for (int f = 0; f < frames; ++f) {
-    std::vector<cv::Mat> images(4);
-    std::vector<octocap_image_t> views;
-    for (int c = 0; c < 4; ++c) {
-      REQUIRE(videos[c].read(images[c]));
-      views.push_back({images[c].data, static_cast<uint32_t>(images[c].cols), static_cast<uint32_t>(images[c].rows),
-                       static_cast<uint32_t>(images[c].step[0]), OCTOCAP_PIXELS_BGR8});
-    }
+    std::vector<cv::Mat> images;
+    const std::vector<octocap_image_t> views = read_views(videos, images);
     REQUIRE(octocap_session_solve_images(s.get(), views.data(), 4, f * 16667) == OCTOCAP_OK);
     octocap_detect_info_t info{};
     info.struct_size = sizeof info;
@@ -164,12 +166,7 @@ TEST_CASE("BlazePose on the real videos: heels, foot tips and hands from pixels,
   std::vector<cv::Mat> images(4);
   size_t feet_solved = 0, feet_bones = 0, hand_bones = 0;
   for (int f = 0; f < first + frames; ++f) {
-    std::vector<octocap_image_t> views;
-    for (int c = 0; c < 4; ++c) {
-      REQUIRE(videos[c].read(images[c]));
-      views.push_back({images[c].data, static_cast<uint32_t>(images[c].cols), static_cast<uint32_t>(images[c].rows),
-                       static_cast<uint32_t>(images[c].step[0]), OCTOCAP_PIXELS_BGR8});
-    }
+    const std::vector<octocap_image_t> views = read_views(videos, images);
     if (f < first) continue;
     REQUIRE(octocap_session_solve_images(s.get(), views.data(), 4, f * 16667) == OCTOCAP_OK);
     std::vector<octocap_joint_t> j(K);

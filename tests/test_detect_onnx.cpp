@@ -26,6 +26,18 @@ using Detector = std::unique_ptr<octocap_detector_t, DetectorDeleter>;
 
 const std::string kPhotos = std::string(OCTOCAP_SOURCE_DIR) + "/.cache/photos/";
 
+// The library's warnings while it lives, kept in `into`.
+struct WarningsKept {
+  explicit WarningsKept(std::vector<std::string>& into) {
+    octocap_set_log_callback([](octocap_log_level_t level, const char* message, void* user) {
+      if (level == OCTOCAP_LOG_WARNING) static_cast<std::vector<std::string>*>(user)->push_back(message);
+    }, OCTOCAP_LOG_WARNING, &into);
+  }
+  ~WarningsKept() { octocap_set_log_callback(nullptr, OCTOCAP_LOG_WARNING, nullptr); }
+  WarningsKept(const WarningsKept&) = delete;
+  WarningsKept& operator=(const WarningsKept&) = delete;
+};
+
 octocap_result_t create(const std::string& model, octocap_detect_mode_t mode, Detector& out) {
   octocap_detector_config_t cfg;
   octocap_detector_config_init(&cfg);
@@ -294,16 +306,13 @@ TEST_CASE("MoveNet Thunder INT8 finds what the float model finds on real photos 
   // an AVX2-only AMD EPYC: median shift 7.8 px on zidane.jpg, 42 vs 35 mm on the real take), so the accuracy below
   // is what octocap promises on VNNI CPUs only (CI's), and the warning what it promises elsewhere.
   std::vector<std::string> warnings;
-  octocap_set_log_callback([](octocap_log_level_t level, const char* message, void* user) {
-    if (level == OCTOCAP_LOG_WARNING) static_cast<std::vector<std::string>*>(user)->push_back(message);
-  }, OCTOCAP_LOG_WARNING, &warnings);
   {
+    const WarningsKept kept(warnings);
     Detector d;
     REQUIRE(create("movenet-thunder-int8", OCTOCAP_DETECT_CROP, d) == OCTOCAP_OK);
     Detector float_model;
     REQUIRE(create("movenet-thunder", OCTOCAP_DETECT_CROP, float_model) == OCTOCAP_OK);
   }
-  octocap_set_log_callback(nullptr, OCTOCAP_LOG_WARNING, nullptr);
   const bool vnni = octocap::cpu_has_vnni();
   INFO("VNNI: " << vnni << ", warnings: " << warnings.size());
   REQUIRE(warnings.size() == (vnni ? 0u : 1u));  // the float model never warns
@@ -445,9 +454,7 @@ TEST_CASE("views inferred at once give exactly what one view after another gives
 
 TEST_CASE("the GPU is used when asked and there, else AUTO falls back to the CPU with a warning and CUDA says why") {
   std::vector<std::string> warnings;
-  octocap_set_log_callback([](octocap_log_level_t level, const char* message, void* user) {
-    if (level == OCTOCAP_LOG_WARNING) static_cast<std::vector<std::string>*>(user)->push_back(message);
-  }, OCTOCAP_LOG_WARNING, &warnings);
+  auto kept = std::make_unique<WarningsKept>(warnings);
   octocap_detector_config_t cfg;
   octocap_detector_config_init(&cfg);
   CHECK(cfg.device == OCTOCAP_DEVICE_CPU);  // a CPU user never loads CUDA libraries
@@ -465,7 +472,7 @@ TEST_CASE("the GPU is used when asked and there, else AUTO falls back to the CPU
   raw = nullptr;
   CHECK(octocap_detector_create(&cfg, &raw) == OCTOCAP_ERROR_INVALID_ARGUMENT);
   CHECK(std::string(octocap_last_error()).find("device 7") != std::string::npos);
-  octocap_set_log_callback(nullptr, OCTOCAP_LOG_WARNING, nullptr);
+  kept.reset();
 
   const cv::Mat photo = cv::imread(kPhotos + "astronaut.png", cv::IMREAD_COLOR);
   REQUIRE(!photo.empty());
