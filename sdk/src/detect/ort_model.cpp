@@ -57,10 +57,6 @@ struct OrtModel::Impl {
   ONNXTensorElementDataType input_type = ONNX_TENSOR_ELEMENT_DATA_TYPE_FLOAT;
 };
 
-// The GPU build of ONNX Runtime (scripts/fetch-onnxruntime.sh --gpu) keeps the CUDA libraries its CUDA provider needs
-// (cuBLAS, cuDNN, ... from NVIDIA's PyPI wheels) beside libonnxruntime. The provider finds them only on the loader's
-// path, so they are loaded here first, from that directory, the way ONNX Runtime's Python package preloads them:
-// nobody has to set LD_LIBRARY_PATH. Some need others: passes until none more loads. Nothing there: nothing done.
 // The directory the loaded libonnxruntime is in ("" when unknown), with its trailing slash.
 static std::string ort_directory() {
   Dl_info info{};
@@ -86,6 +82,10 @@ static std::string cuda_diagnosis() {
   return "";
 }
 
+// The GPU build of ONNX Runtime (scripts/fetch-onnxruntime.sh --gpu) keeps the CUDA libraries its CUDA provider needs
+// (cuBLAS, cuDNN, ... from NVIDIA's PyPI wheels) beside libonnxruntime. The provider finds them only on the loader's
+// path, so they are loaded here first, from that directory, the way ONNX Runtime's Python package preloads them:
+// nobody has to set LD_LIBRARY_PATH. Some need others: passes until none more loads. Nothing there: nothing done.
 static void preload_cuda_libraries() {
   static std::once_flag once;
   std::call_once(once, [] {
