@@ -13,5 +13,8 @@ fi
 cmake --build "$DIR" -j "$JOBS" --target octocap_tests octocap_cli
 # Child processes (the stream tests' publishers) run under TSan too: same suppressions, and no exit code of its own.
 export TSAN_OPTIONS="suppressions=$ROOT/.ci/tsan.supp halt_on_error=1 exitcode=0 report_signal_unsafe=0"
-"$DIR/tests/octocap_tests" "${1:-[live],[stream],[frames]}" 2>&1 | tee "$DIR/tsan.log" | tail -3
+# Left out by default, as in the sanitizer pass (scripts/sanitize.sh says why): the two tests that judge the live
+# pipeline's accuracy fed in real time by real servers (four RTSP cameras at 60 fps, capture nodes on them); at TSan's
+# speed decoding falls behind and what they measure is the instrumentation. Their threads run in the other live tests.
+"$DIR/tests/octocap_tests" "${1:-[live]~\"live: four RTSP*\"~\"capture nodes: two node*\",[stream],[frames]}" 2>&1 | tee "$DIR/tsan.log" | tail -3
 ! grep -q "WARNING: ThreadSanitizer" "$DIR/tsan.log"
