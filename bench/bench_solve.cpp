@@ -266,10 +266,7 @@ void filter_table() {
   std::printf("\nTemporal filter (CMU 01_01, 4 cameras 1920x1080, Gaussian pixel noise): MPJPE / jitter, mm\n");
   std::printf("| noise | none | One Euro, fixed (1.5 Hz, beta 20) | One Euro, adaptive | median reprojection |\n"
               "|---|---|---|---|---|\n");
-  synth::RigOptions rig;
-  rig.cameras = 4;
-  rig.width = 1920, rig.height = 1080, rig.focal = 1400;
-  const Calibration cams = synth::make_camera_ring(rig);
+  const Calibration cams = testing::filter_cameras();
   for (auto [sigma, step] : {std::pair{1.0, 4}, std::pair{2.0, 4}, std::pair{3.0, 4}, std::pair{6.0, 4}, std::pair{3.0, 2}}) {
     const synth::Motion motion = synth::load_cmu_motion(synth::default_bvh_path(), 0, 300, static_cast<size_t>(step));
     std::printf("| %.0f px, %.0f fps |", sigma, motion.rate_hz);

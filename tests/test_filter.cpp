@@ -50,10 +50,7 @@ TEST_CASE("One Euro restarts cleanly after a reset", "[filter]") {
 // The session's default filter follows the measured noise: on CMU motion seen by 4 cameras, with 1 px of detection
 // noise it is as good as no filter (the fixed filter doubles the error by lagging), with 6 px as good as the fixed one.
 TEST_CASE("the default filter smooths a clean signal less and a noisy one as much as the fixed filter", "[filter]") {
-  synth::RigOptions rig;
-  rig.cameras = 4;
-  rig.width = 1920, rig.height = 1080, rig.focal = 1400;
-  const Calibration cams = synth::make_camera_ring(rig);
+  const Calibration cams = testing::filter_cameras();
   const synth::Motion motion = synth::load_cmu_motion(synth::default_bvh_path(), 0, 300, 4);
   auto run = [&](double sigma, bool filter, bool adaptive) {
     SessionConfig cfg;

@@ -17,6 +17,14 @@ struct TakeScore {
   size_t points = 0;     // keypoint observations scored
 };
 
+// The rig the filter was tuned on and is judged on: 4 cameras, 1920x1080, focal 1400 px.
+inline octocap::Calibration filter_cameras() {
+  octocap::synth::RigOptions rig;
+  rig.cameras = 4;
+  rig.width = 1920, rig.height = 1080, rig.focal = 1400;
+  return octocap::synth::make_camera_ring(rig);
+}
+
 // Every frame of `motion` seen by `cams` with Gaussian pixel noise of `sigma` (nothing missing, wrong or swapped),
 // solved by one session with `cfg`.
 inline TakeScore score_take(const octocap::Calibration& cams, const octocap::synth::Motion& motion,

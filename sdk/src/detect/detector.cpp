@@ -56,6 +56,19 @@ double overlap(const Rect& a, const Rect& b) {
   return both / (a.width * a.height + b.width * b.height - both);
 }
 
+// How many of a person's keypoints are confident.
+int confident_count(const Person2D& person, double min_confidence) {
+  int n = 0;
+  for (const Keypoint2D& k : person) n += k.confidence >= min_confidence;
+  return n;
+}
+
+int confident_count(const std::vector<DetectedPerson>& people, double min_confidence) {
+  int n = 0;
+  for (const DetectedPerson& p : people) n += confident_count(p.keypoints, min_confidence);
+  return n;
+}
+
 // The median pixel distance between the keypoints two people both have (confident), INFINITY with fewer than three.
 double keypoint_distance(const Person2D& a, const Person2D& b, double min_confidence) {
   std::vector<double> d;
@@ -318,9 +331,7 @@ std::vector<char> Detector::schedule(const std::vector<ImageView>& views) const 
   int budget = config_.views_per_frame;
   for (size_t v = 0; v < views.size(); ++v) {
     if (absent(views[v])) continue;
-    int confident = 0;
-    for (const DetectedPerson& p : last_result_[v])
-      for (const Keypoint2D& k : p.keypoints) confident += k.confidence >= config_.min_confidence;
+    const int confident = confident_count(last_result_[v], config_.min_confidence);
     // Nobody to follow, no picture to follow from, or a track that lost half of what its detection found.
     const bool must = !trackers_[v].follows(views[v]) || confident == 0 || 2 * confident < detected_keypoints_[v];
     if (must)
@@ -411,9 +422,7 @@ std::vector<std::vector<DetectedPerson>> Detector::detect(const std::vector<Imag
   for (auto& people : result)
     people.erase(std::remove_if(people.begin(), people.end(),
                                 [&](const DetectedPerson& p) {
-                                  int confident = 0;
-                                  for (const Keypoint2D& k : p.keypoints) confident += k.confidence >= config_.min_confidence;
-                                  return confident < 3;
+                                  return confident_count(p.keypoints, config_.min_confidence) < 3;
                                 }),
                  people.end());
   for (size_t v = 0; v < result.size(); ++v)
@@ -425,9 +434,7 @@ std::vector<std::vector<DetectedPerson>> Detector::detect(const std::vector<Imag
       if (absent(views[v])) continue;
       last_result_[v] = result[v];
       if (frames_since_detect_[v] != 0) continue;
-      detected_keypoints_[v] = 0;
-      for (const DetectedPerson& p : result[v])
-        for (const Keypoint2D& k : p.keypoints) detected_keypoints_[v] += k.confidence >= config_.min_confidence;
+      detected_keypoints_[v] = confident_count(result[v], config_.min_confidence);
     }
   timings_.total_ms = ms_since(t0);
   return result;
