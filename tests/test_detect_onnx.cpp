@@ -500,3 +500,17 @@ TEST_CASE("the GPU is used when asked and there, else AUTO falls back to the CPU
   REQUIRE(warnings.size() == 1);
   CHECK(warnings[0].find("runs on the CPU") != std::string::npos);
 }
+
+TEST_CASE("a model's layout is read from its card without loading the network") {
+  octocap_layout_t layout = OCTOCAP_LAYOUT_AUTO;
+  REQUIRE(octocap_model_layout("movenet-thunder", &layout) == OCTOCAP_OK);
+  CHECK(layout == OCTOCAP_LAYOUT_COCO_17);
+  REQUIRE(octocap_model_layout("blazepose-full", &layout) == OCTOCAP_OK);
+  CHECK(layout == OCTOCAP_LAYOUT_BLAZEPOSE_33);
+  REQUIRE(octocap_model_layout("", &layout) == OCTOCAP_OK);  // the default model
+  CHECK(layout == OCTOCAP_LAYOUT_COCO_17);
+  CHECK(octocap_model_layout("no-such-model", &layout) == OCTOCAP_ERROR_IO);
+  CHECK(std::string(octocap_last_error()).find("no-such-model") != std::string::npos);
+  CHECK(octocap_model_layout(nullptr, &layout) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  CHECK(octocap_model_layout("movenet-thunder", nullptr) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+}
