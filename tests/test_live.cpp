@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "capture/frame_set.h"
+#include "capture/picture_pool.h"
 #include "capture/stream_clock.h"
 #include "octocap/octocap.hpp"
 #include "support/child_process.h"
@@ -139,6 +140,39 @@ TEST_CASE("frame sets: each camera's picture nearest the set's time, late and si
   // Nothing anywhere: nothing to do.
   d = octocap::decide_frame_set({never, never}, 1000000, o);
   CHECK_FALSE(d.emit);
+}
+
+TEST_CASE("picture pool: a decoder reuses the buffers nobody holds and never writes one a consumer holds", "[live]") {
+  octocap::PicturePool pool(2);
+  auto decode = [](cv::Mat& into, unsigned char value) { into.create(1920, 1088, CV_8UC3), into.setTo(value); };
+  auto value = [](const cv::Mat& m) { return m.at<cv::Vec3b>(100, 100)[0]; };
+  cv::Mat& first = pool.next();
+  decode(first, 1);
+  const cv::Mat held = first;  // a consumer keeps frame 1
+  cv::Mat& second = pool.next();
+  decode(second, 2);
+  const unsigned char* second_pixels = second.data;
+  REQUIRE(second_pixels != held.data);
+  // Frame 2 was let go (nobody copied it): frame 3 is decoded into its buffer, in place.
+  cv::Mat& third = pool.next();
+  CHECK(third.data == second_pixels);
+  decode(third, 3);
+  CHECK(third.data == second_pixels);
+  cv::Mat held_too = third;
+  // Frames 1 and 3 both held: frame 4 gets a buffer of its own, and theirs keep their pixels.
+  cv::Mat& fourth = pool.next();
+  decode(fourth, 4);
+  CHECK(fourth.data != held.data);
+  CHECK(fourth.data != second_pixels);
+  CHECK(value(held) == 1);
+  CHECK(value(held_too) == 3);
+  // Frame 3 let go on another thread (as the solving thread drops a frame set): its buffer is written again.
+  std::thread([&] { held_too.release(); }).join();
+  cv::Mat& fifth = pool.next();
+  CHECK(fifth.data == second_pixels);
+  decode(fifth, 5);
+  CHECK(fifth.data == second_pixels);
+  CHECK(value(held) == 1);
 }
 
 TEST_CASE("live: four real views played as picture-folder cameras solve as the offline solve does", "[live][real]") {

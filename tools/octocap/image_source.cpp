@@ -37,6 +37,16 @@ struct ImageSource::Camera {
   fs::path video;                  // or a video
   cv::VideoCapture capture;
   size_t next = 0;                 // next frame the capture will give
+  // Decoding writes each frame into one of these once the frame that was there is let go: a fresh 6 MB picture per
+  // camera and frame cost more in page faults than the copy itself. One being decoded, one being solved, one spare.
+  cv::Mat buffers[3];
+
+  cv::Mat& unheld_buffer() {
+    for (cv::Mat& b : buffers)  // the refcount drops atomically on the solving thread: read it so
+      if (b.u == nullptr || __atomic_load_n(&b.u->refcount, __ATOMIC_ACQUIRE) == 1) return b;
+    buffers[0].release();  // all still held (a caller keeping frames): theirs stay, this one starts anew
+    return buffers[0];
+  }
 };
 
 ImageSource::ImageSource(const std::string& folder) {
@@ -93,7 +103,7 @@ std::vector<cv::Mat> ImageSource::read_now(size_t f) {
   std::vector<cv::Mat> images;
   for (size_t c = 0; c < cameras_.size(); ++c) {
     Camera& cam = *cameras_[c];
-    cv::Mat image;
+    cv::Mat& image = cam.unheld_buffer();
     if (!cam.pictures.empty()) {
       image = cv::imread(cam.pictures.at(f).string(), cv::IMREAD_COLOR);
       if (image.empty()) throw std::runtime_error("cannot read " + cam.pictures[f].string());

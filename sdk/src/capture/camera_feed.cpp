@@ -63,7 +63,7 @@ void CameraFeed::run() {
   bool started = false;
   StreamClock clock;  // live sources: capture times from the stream's own timestamps, once they prove steady
   while (!stop_) {
-    cv::Mat image;  // a fresh buffer each time: a consumer may still hold the previous picture
+    cv::Mat& image = pictures_.next();  // never a buffer a consumer still holds: theirs stays as it was
     int64_t stream_us = 0;
     bool ok = false;
     try {
@@ -99,7 +99,7 @@ void CameraFeed::run() {
     CapturedFrame frame;
     frame.width = image.cols;
     frame.height = image.rows;
-    frame.image = std::move(image);
+    frame.image = image;  // shared with the pool, which will not write it again while the frame is held
     frame.grab_us = spec_.live() ? clock.capture_us(monotonic_us(), stream_us) : monotonic_us();
     frame.stream_clock = spec_.live() && clock.trusted();
     frame.stream_us = stream_us;

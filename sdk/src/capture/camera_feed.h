@@ -8,6 +8,7 @@
 
 #include "capture/feed.h"
 #include "capture/frame_source.h"
+#include "capture/picture_pool.h"
 
 namespace octocap {
 
@@ -25,6 +26,7 @@ class CameraFeed : public Feed {
 
   FeedOptions options_;
   std::unique_ptr<FrameSource> source_;
+  PicturePool pictures_;  // the decoder's buffers, used by the camera's thread only
   std::thread thread_;
   std::atomic<bool> stop_{false};
   std::condition_variable wake_;  // interrupts back-off and pacing sleeps on stop (with Feed::mutex_)

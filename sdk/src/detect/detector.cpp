@@ -395,12 +395,17 @@ std::vector<std::vector<DetectedPerson>> Detector::detect(const std::vector<Imag
     detected_keypoints_.resize(views.size(), 0);
     const bool scheduled = config_.views_per_frame > 0 && present > static_cast<size_t>(config_.views_per_frame);
     const std::vector<char> detect_now = scheduled ? schedule(views) : std::vector<char>(views.size(), 1);
-    // Views are independent here: up to parallel_ of them at once, each writing only its own slots.
+    // Views are independent here: up to parallel_ of them at once, each writing only its own slots. The views that
+    // run the network go first: a worker that starts on a 25 ms inference last would leave the other idle.
+    std::vector<size_t> order(views.size());
+    for (size_t v = 0; v < order.size(); ++v) order[v] = v;
+    std::stable_partition(order.begin(), order.end(), [&](size_t v) { return detect_now[v] != 0; });
     std::atomic<size_t> next{0};
     std::exception_ptr failure;
     std::mutex failure_mutex;
     auto worker = [&] {
-      for (size_t v = next++; v < views.size(); v = next++) {
+      for (size_t i = next++; i < order.size(); i = next++) {
+        const size_t v = order[i];
         try {
           // A view without a picture this set (a live camera that lagged) keeps its last picture and people: the
           // next picture is followed from them across the gap (the way-back check drops what moved too far).
