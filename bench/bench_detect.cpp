@@ -1,12 +1,16 @@
 // 2D detection benchmark on real camera frames (Pose2Sim's demo videos, 1088x1920): ms per frame for 1, 4 and 8
 // views, per path (per view, mosaic, crop) and model, with 1 and 2 ONNX Runtime threads; then each path's accuracy
 // on the whole 4-camera take: keypoints solved, reprojection error, distance to Pose2Sim's own 3D.
+// `--end-to-end [LEVER]`: frames/s from the videos with decoding, per stage, per lever (model, views detected a frame),
+// for 1, 4 and 8 views. `--accuracy [PATH]`, `--crop-gap`: those tables alone.
 // Run after scripts/fetch-models.sh and scripts/fetch-real-videos.sh (scripts/test.sh fetches both).
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <future>
 #include <opencv2/videoio.hpp>
 #include <string>
 #include <vector>
@@ -245,12 +249,151 @@ void crop_gap() {
   octocap_calibration_destroy(calib);
 }
 
+// End to end from the videos as `octocap solve --images` runs them: the next frame decoded on another thread (one
+// ahead, into reused buffers) while this one is detected and solved. Per lever and view count (8: the four videos
+// twice, each decoded on its own): frames/s, and per frame the stages: decoding (on its thread), how long the frame
+// waited for it, detection (wall), within it the views' pre-processing, network and optical flow (summed over the
+// views, which run two at a time), then the 3D solve, filter and rig. One view is detected only (no 3D from one).
+struct Lever {
+  const char* name;
+  const char* model;
+  uint32_t views_per_frame;
+};
+const Lever kLevers[] = {{"Thunder (default)", "movenet-thunder", 0},
+                         {"Thunder, 2 views detected a frame", "movenet-thunder", 2},
+                         {"Thunder, 1 view detected a frame", "movenet-thunder", 1},
+                         {"Thunder INT8", "movenet-thunder-int8", 0},
+                         {"Lightning", "movenet-lightning", 0},
+                         {"Lightning, 2 views detected a frame", "movenet-lightning", 2},
+                         {"Lightning, 1 view detected a frame", "movenet-lightning", 1}};
+
+class Decoder {
+ public:
+  explicit Decoder(size_t views) : buffers_(views) {
+    for (size_t v = 0; v < views; ++v) videos_.emplace_back(kVideos + "cam0" + std::to_string(v % 4 + 1) + ".mp4");
+    ahead_ = std::async(std::launch::async, [this] { return decode(); });
+  }
+  ~Decoder() { if (ahead_.valid()) ahead_.wait(); }
+  // The frame decoded ahead (empty at the end), and the next one started; `waited_ms`: how long it was not ready.
+  std::vector<cv::Mat> next(double& waited_ms) {
+    const auto t0 = std::chrono::steady_clock::now();
+    std::vector<cv::Mat> frame = ahead_.get();
+    waited_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (!frame.empty()) ahead_ = std::async(std::launch::async, [this] { return decode(); });
+    return frame;
+  }
+  double decode_ms = 0;  // all frames, on the decoding thread
+
+ private:
+  std::vector<cv::Mat> decode() {
+    const auto t0 = std::chrono::steady_clock::now();
+    std::vector<cv::Mat> frame(videos_.size());
+    for (size_t v = 0; v < videos_.size(); ++v) {
+      auto& ring = buffers_[v];  // as octocap solve --images: a buffer the frame before last let go
+      cv::Mat& into = ring[turn_ % 2];
+      if (!videos_[v].read(into)) return {};
+      frame[v] = into;
+    }
+    ++turn_;
+    decode_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    return frame;
+  }
+  std::vector<cv::VideoCapture> videos_;
+  std::vector<std::array<cv::Mat, 2>> buffers_;
+  size_t turn_ = 0;
+  std::future<std::vector<cv::Mat>> ahead_;
+};
+
+void end_to_end(const std::string& only) {
+  octocap_calibration_t* four = nullptr;
+  if (octocap_calibration_load((kDemo + "/calibration/Calib_qualisys.toml").c_str(), &four) != OCTOCAP_OK) {
+    std::printf("no calibration: %s\n", octocap_last_error());
+    return;
+  }
+  std::vector<octocap_camera_t> cams(8);
+  for (uint32_t c = 0; c < 8; ++c) {
+    octocap_calibration_get_camera(four, c % 4, &cams[c]);
+    std::snprintf(cams[c].name, sizeof cams[c].name, "cam%u", c + 1);
+  }
+  octocap_calibration_t* eight = nullptr;
+  if (octocap_calibration_create(cams.data(), 8, &eight) != OCTOCAP_OK) {
+    std::printf("no 8-camera calibration: %s\n", octocap_last_error());
+    octocap_calibration_destroy(four);
+    return;
+  }
+  std::printf("\n## End to end from the videos (1088x1920 H.264, decoding included, 100 frames), ms per frame\n\n");
+  std::printf("| lever | views | frames/s | decoding (its thread) | waited for decoding | detection | pre-process, "
+              "network, flow (summed over views) | 3D, filter, rig | network runs |\n|---|---|---|---|---|---|---|---|---|\n");
+  for (const Lever& lever : kLevers) {
+    if (std::string(lever.name).find(only) == std::string::npos) continue;
+    for (size_t n : {1u, 4u, 8u}) {
+      octocap_detector_config_t d;
+      octocap_detector_config_init(&d);
+      std::snprintf(d.model, sizeof d.model, "%s", lever.model);
+      d.views_per_frame = lever.views_per_frame;
+      octocap_session_t* s = nullptr;
+      octocap_detector_t* alone = nullptr;  // one view: detection only
+      octocap_session_config_t cfg;
+      octocap_session_config_init(&cfg);
+      cfg.layout = OCTOCAP_LAYOUT_COCO_17;
+      const bool ok = n == 1 ? octocap_detector_create(&d, &alone) == OCTOCAP_OK
+                             : octocap_session_create(&cfg, n == 4 ? four : eight, &s) == OCTOCAP_OK &&
+                                   octocap_session_set_detector(s, &d) == OCTOCAP_OK;
+      if (!ok) {
+        std::printf("| %s | %zu | %s |\n", lever.name, n, octocap_last_error());
+        octocap_session_destroy(s);
+        octocap_detector_destroy(alone);
+        continue;
+      }
+      Decoder decoder(n);
+      double waited = 0, detection = 0, pre = 0, network = 0, flow = 0, solve = 0, runs = 0;
+      int frames = 0;
+      const auto start = std::chrono::steady_clock::now();
+      for (;;) {
+        double w = 0;
+        const std::vector<cv::Mat> frame = decoder.next(w);
+        if (frame.empty()) break;
+        const auto t0 = std::chrono::steady_clock::now();
+        const auto views = views_of(frame, n);
+        octocap_detect_info_t info{};
+        info.struct_size = sizeof info;
+        if (alone) {
+          octocap_detector_run(alone, views.data(), static_cast<uint32_t>(n));
+          octocap_detector_info(alone, &info);
+        } else {
+          octocap_session_solve_images(s, views.data(), static_cast<uint32_t>(n), static_cast<int64_t>(frames) * 16667);
+          octocap_session_detect_info(s, &info);
+        }
+        const double frame_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        waited += w, detection += info.total_ms, pre += info.preprocess_ms, network += info.inference_ms;
+        flow += info.track_ms, solve += frame_ms - info.total_ms, runs += info.inferences;
+        ++frames;
+      }
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      char solved[32] = "-";
+      if (s) std::snprintf(solved, sizeof solved, "%.2f", solve / frames);
+      std::printf("| %s | %zu | %.1f | %.1f | %.1f | %.1f | %.1f, %.1f, %.1f | %s | %.2f |\n", lever.name, n,
+                  frames / seconds, decoder.decode_ms / frames, waited / frames, detection / frames, pre / frames,
+                  network / frames, flow / frames, solved, runs / frames);
+      std::fflush(stdout);
+      octocap_session_destroy(s);
+      octocap_detector_destroy(alone);
+    }
+  }
+  octocap_calibration_destroy(eight);
+  octocap_calibration_destroy(four);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::printf("# octocap 2D detection benchmark (ONNX Runtime %s)\n", octocap_onnxruntime_version());
   if (argc > 1 && std::string(argv[1]) == "--crop-gap") {  // that table alone
     crop_gap();
+    return 0;
+  }
+  if (argc > 1 && std::string(argv[1]) == "--end-to-end") {  // that table alone (levers naming argv[2])
+    end_to_end(argc > 2 ? argv[2] : "");
     return 0;
   }
   if (argc > 1 && std::string(argv[1]) == "--accuracy") {  // that table alone (rows naming argv[2])

@@ -2,6 +2,7 @@
 #pragma once
 #include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace octocap {
@@ -16,5 +17,11 @@ inline double quantile_in_place(std::vector<double>& v, double p, double empty) 
 }
 
 inline double median_in_place(std::vector<double>& v, double empty) { return quantile_in_place(v, 0.5, empty); }
+
+// The cost of what cannot be measured (no pairs, no views): worse than any measured one.
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// The median, or kInf when there is nothing to take it of.
+inline double median_or_inf(std::vector<double>& v) { return median_in_place(v, kInf); }
 
 }  // namespace octocap

@@ -4,12 +4,11 @@
 #include <cmath>
 #include <limits>
 
+#include "core/stats.h"
 #include "solve/view_agreement.h"
 
 namespace octocap {
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 double mean_confidence(const Person2D& p) {
   double s = 0;

@@ -11,7 +11,6 @@
 namespace octocap {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr size_t kMinPairs = 30;  // fewer shared keypoints than this cannot place a camera in time
 
 struct PairGeometry {
@@ -36,8 +35,6 @@ double epipolar_px(const PairGeometry& g, const Eigen::Vector2d& na, const Eigen
   const double e = xb.dot(lb);
   return 0.5 * (std::abs(e) / nb2 * g.focal_b + std::abs(e) / na2 * g.focal_a);
 }
-
-double median(std::vector<double>& v) { return median_in_place(v, kInf); }
 
 }  // namespace
 
@@ -82,14 +79,14 @@ SyncEstimate estimate_time_offsets(const Calibration& calib,
           for (size_t k = 0; k < std::min(pa.size(), pb.size()); ++k)
             if (pa[k].allFinite() && pb[k].allFinite()) d.push_back(epipolar_px(g, pa[k], pb[k]));
           if (d.size() < 5) continue;
-          const double m = median(d);
+          const double m = median_or_inf(d);
           if (m < best) best = m, best_n = d.size();
         }
       if (best_n == 0) continue;
       per_frame.push_back(best);
       pairs += best_n;
     }
-    return pairs >= kMinPairs ? median(per_frame) : kInf;
+    return pairs >= kMinPairs ? median_or_inf(per_frame) : kInf;
   };
   struct Relative {
     double shift = 0;   // b's frame f + shift shows a's frame f

@@ -7,13 +7,6 @@
 #include "solve/triangulation.h"
 
 namespace octocap {
-namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-double median(std::vector<double>& v) { return median_in_place(v, kInf); }
-
-}  // namespace
 
 double distance_to_pose(const Camera& cam, const Person2D& person, const std::vector<Eigen::Vector3d>& pose,
                         double min_conf) {
@@ -23,7 +16,7 @@ double distance_to_pose(const Camera& cam, const Person2D& person, const std::ve
     const Eigen::Vector2d p = cam.project(pose[k]);
     if (p.allFinite()) d.push_back((p - Eigen::Vector2d(person[k].x, person[k].y)).norm());
   }
-  return d.size() >= 3 ? median(d) : kInf;
+  return d.size() >= 3 ? median_or_inf(d) : kInf;
 }
 
 std::vector<double> combination_errors(const Calibration& calib, const std::vector<std::vector<Person2D>>& people,
@@ -57,7 +50,7 @@ std::vector<double> combination_errors(const Calibration& calib, const std::vect
   }
   std::vector<double> out(V, kInf);
   for (size_t v = 0; v < V; ++v)
-    if (errs[v].size() >= 3) out[v] = median(errs[v]);
+    if (errs[v].size() >= 3) out[v] = median_or_inf(errs[v]);
   return out;
 }
 
