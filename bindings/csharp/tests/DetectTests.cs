@@ -39,8 +39,7 @@ namespace Octocap.Tests
                     }
                     Assert.AreEqual(0, session.Detections(0, new Keypoint2D[64]));
                     DetectInfo info = session.DetectInfo;
-                    // Nobody anywhere: each view's whole picture, then its two end squares (a lost view's search).
-                    Assert.AreEqual((uint)(3 * calib.CameraCount), info.Inferences);
+                    Assert.AreEqual((uint)calib.CameraCount, info.Inferences);
                     Assert.AreEqual(Layout.Coco17, info.Layout);
                     Assert.AreEqual(17u, info.KeypointCount);
                     Assert.AreEqual("movenet-lightning", info.Model.ToString());

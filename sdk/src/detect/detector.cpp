@@ -332,8 +332,6 @@ std::vector<DetectedPerson> Detector::find_anyone(size_t v, const ImageView& vie
   // Nobody on the whole view: a single-person network sees a portrait view letterboxed into its square input, the
   // person a third or less of its height, often below its confidence (a capture node's camera that lost its person
   // stayed lost for 50-60 frames so). The view's two end squares, overlapping, show them twice as large.
-  // Every frame while nobody is found (a view with nobody costs three inferences): searched only every fifth frame,
-  // a capture node's lost view took that much longer to come back, and the node test failed as often as before.
   const double side = std::min(view.width, view.height);
   if (std::max(view.width, view.height) < 1.3 * side) return {};
   const bool portrait = view.height > view.width;
