@@ -277,7 +277,9 @@ std::vector<DetectedPerson> Detector::detect_view(size_t v, const ImageView& vie
   };
   const bool searches = config_.find_new_people && card_.max_people > 1;
   if (boxes.empty() && !searches) {
-    auto found = find_anyone(v, view);
+    auto found = infer_region(view, whole);
+    pick_people(found, config_.pick == PersonPick::all ? PersonPick::most_confident : config_.pick, first_hint(v), 1,
+                config_.min_confidence);
     if (found.empty()) return {};
     const Rect box = keypoint_box(found[0].keypoints, config_.min_confidence);
     if (box.width <= 0 && box.height <= 0) return {};
@@ -321,32 +323,6 @@ std::vector<DetectedPerson> Detector::detect_view(size_t v, const ImageView& vie
     if (box.width > 0 || box.height > 0) last_people_[v].push_back(p.keypoints);
   }
   return people;
-}
-
-std::vector<DetectedPerson> Detector::find_anyone(size_t v, const ImageView& view) {
-  const PersonPick pick = config_.pick == PersonPick::all ? PersonPick::most_confident : config_.pick;
-  const Rect whole{0, 0, static_cast<double>(view.width), static_cast<double>(view.height)};
-  auto found = infer_region(view, whole);
-  pick_people(found, pick, first_hint(v), 1, config_.min_confidence);
-  if (!found.empty() && confident_count(found[0].keypoints, config_.min_confidence) >= 3) return found;
-  // Nobody on the whole view: a single-person network sees a portrait view letterboxed into its square input, the
-  // person a third or less of its height, often below its confidence (a capture node's camera that lost its person
-  // stayed lost for 50-60 frames so). The view's two end squares, overlapping, show them twice as large.
-  const double side = std::min(view.width, view.height);
-  if (std::max(view.width, view.height) < 1.3 * side) return {};
-  const bool portrait = view.height > view.width;
-  std::vector<DetectedPerson> best;
-  for (int end = 0; end < 2; ++end) {
-    const double at = end == 0 ? 0 : (portrait ? view.height : view.width) - side;
-    const Rect tile = portrait ? Rect{0, at, side, side} : Rect{at, 0, side, side};
-    auto in_tile = infer_region(view, tile);
-    pick_people(in_tile, pick, first_hint(v), 1, config_.min_confidence);
-    if (!in_tile.empty() && (best.empty() || confident_count(in_tile[0].keypoints, config_.min_confidence) >
-                                                 confident_count(best[0].keypoints, config_.min_confidence)))
-      best = std::move(in_tile);
-  }
-  if (best.empty() || confident_count(best[0].keypoints, config_.min_confidence) < 3) return {};
-  return best;
 }
 
 std::vector<char> Detector::schedule(const std::vector<ImageView>& views) const {

@@ -90,8 +90,6 @@ class Detector {
   // and hips, else level (crop_around of `box`).
   std::vector<DetectedPerson> infer_crop(const ImageView& view, const Rect& box, const Person2D* person);
   std::vector<DetectedPerson> detect_view(size_t v, const ImageView& view);
-  // Nobody followed in view v: whoever the whole view shows, else whoever either end square of it shows.
-  std::vector<DetectedPerson> find_anyone(size_t v, const ImageView& view);
   std::vector<std::vector<DetectedPerson>> detect_mosaic(const std::vector<ImageView>& views);
   std::pair<int, int> input_size_for(double aspect) const;
   // Which views run the network this frame (views_per_frame): 1 = detect, 0 = follow by optical flow.
