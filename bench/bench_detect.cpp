@@ -5,7 +5,6 @@
 // for 1, 4 and 8 views. `--accuracy [PATH]`, `--crop-gap`: those tables alone.
 // Run after scripts/fetch-models.sh and scripts/fetch-real-videos.sh (scripts/test.sh fetches both).
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -15,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "capture/picture_pool.h"
 #include "pose2sim_reference.h"
 #include "octocap/octocap.h"
 
@@ -289,18 +289,15 @@ class Decoder {
     const auto t0 = std::chrono::steady_clock::now();
     std::vector<cv::Mat> frame(videos_.size());
     for (size_t v = 0; v < videos_.size(); ++v) {
-      auto& ring = buffers_[v];  // as octocap solve --images: a buffer the frame before last let go
-      cv::Mat& into = ring[turn_ % 2];
+      cv::Mat& into = buffers_[v].next();  // as the live feeds: a buffer nobody holds any more
       if (!videos_[v].read(into)) return {};
       frame[v] = into;
     }
-    ++turn_;
     decode_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     return frame;
   }
   std::vector<cv::VideoCapture> videos_;
-  std::vector<std::array<cv::Mat, 2>> buffers_;
-  size_t turn_ = 0;
+  std::vector<octocap::PicturePool> buffers_;
   std::future<std::vector<cv::Mat>> ahead_;
 };
 

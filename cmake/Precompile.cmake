@@ -1,8 +1,9 @@
 # Build speed. Precompiled headers for the targets with many translation units: the third-party headers nearly
-# every one of their files includes (Eigen, OpenCV's core, the standard library; Catch2 for the tests) are parsed once per target instead
-# of once per file. Parsing them costs ~3.5 s a file here, a third of the build on two cores. Only third-party and
-# standard headers go in: octocap's own headers differ per file (the tests include either the public octocap.hpp or
-# internals, which must not meet), and a file must still compile without the precompiled header (OCTOCAP_PCH=OFF).
+# every one of their files includes (Eigen, OpenCV's core, the standard library; Catch2 for the tests) are parsed
+# once per target instead of once per file. Parsing them costs ~3.5 s a file here, a third of the build on two
+# cores. Only third-party and standard headers go in: octocap's own headers differ per file (the tests include
+# either the public octocap.hpp or internals, which must not meet), and a file must still compile without the
+# precompiled header (OCTOCAP_PCH=OFF).
 option(OCTOCAP_PCH "Precompiled headers for the large targets (faster builds)" ON)
 
 # octocap_precompile(TARGET [HEADER ...]): the standard headers, and the given ones (those on the target's include
