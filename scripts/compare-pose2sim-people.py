@@ -15,12 +15,15 @@ import numpy as np
 
 def read_ours(path):
     rows = list(csv.reader(open(path)))
-    names = [c[:-2] for c in rows[0][2::3]]
+    # frame,time,person,NAME_x,... (1.6; before it frame,person,NAME_x,...)
+    person = rows[0].index('person')
+    first = person + 1
+    names = [c[:-2] for c in rows[0][first::3]]
     people = {}
     for r in rows[1:]:
-        r = r + [''] * (2 + 3 * len(names) - len(r))
-        frame, pid = int(r[0]), int(r[1])
-        pts = np.array([[float(r[2 + 3 * k + i]) if r[2 + 3 * k] else np.nan for i in range(3)]
+        r = r + [''] * (first + 3 * len(names) - len(r))
+        frame, pid = int(r[0]), int(r[person])
+        pts = np.array([[float(r[first + 3 * k + i]) if r[first + 3 * k] else np.nan for i in range(3)]
                         for k in range(len(names))])
         people.setdefault(pid, {})[frame] = pts
     return names, people

@@ -39,6 +39,7 @@ TEST_CASE("capture nodes: two node processes publish keypoints, a hub solves the
     servers.push_back(std::make_unique<ChildProcess>(std::vector<std::string>{
         "/usr/bin/python3", kServer, "--port", std::to_string(base_port + c),
         "/cam=" + kStreams + "cam0" + std::to_string(c + 1) + "_960.h264"}));
+  for (int c = 0; c < 4; ++c) REQUIRE(port_accepts(base_port + c, 30000));  // the cameras are on before the nodes
   // Node A has cameras 1 and 2, node B cameras 3 and 4; both detect at the same 5 ticks a second.
   auto node = [&](const std::string& name, int first) {
     return std::make_unique<ChildProcess>(std::vector<std::string>{

@@ -111,7 +111,8 @@ TEST_CASE("live: four RTSP cameras on loopback solve as offline; one killed and 
   for (int c = 0; c < 4; ++c) cameras.push_back(url(c));
   octocap::Live live(cfg, coco_session(), calib, cameras);
   live.set_detector(lightning());
-  live.start();  // the servers have had the offline solve's time to come up
+  for (int c = 0; c < 4; ++c) REQUIRE(port_accepts(base_port + c, 30000));  // a cold machine starts Python slowly
+  live.start();
   for (int c = 0; c < 4; ++c) CHECK(live.camera(static_cast<uint32_t>(c)).nominal_fps > 50);  // they say 60
 
   // Every camera streaming (each starts at its stream's next key frame: up to half a second), then at least 60

@@ -6,11 +6,15 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <map>
 #include <random>
 #include <string>
 #include <vector>
+
+#include <Eigen/Geometry>
 
 #include "crowd.h"
 #include "io/calibration_toml.h"
@@ -115,7 +119,112 @@ std::vector<OscMessage> next_bundle(int sock) {
   return parse_bundle(packet);
 }
 
+Eigen::Quaterniond quaternion(const OscMessage& m) {
+  REQUIRE(m.floats.size() == 7);
+  return Eigen::Quaterniond(m.floats[6], m.floats[3], m.floats[4], m.floats[5]);
+}
+
+Eigen::Vector3d position(const OscMessage& m) {
+  REQUIRE(m.floats.size() == 7);
+  return Eigen::Vector3d(m.floats[0], m.floats[1], m.floats[2]);
+}
+
+// What a VMC receiver does with a bundle: Unity's humanoid hierarchy from /VMC/Ext/Root/Pos down, each bone at its
+// local position and rotation in its parent; the world position of every bone received.
+std::map<std::string, Eigen::Vector3d> rebuild_pose(const std::vector<OscMessage>& bundle) {
+  static const std::map<std::string, std::string> parent = {
+      {"Spine", "Hips"}, {"Chest", "Spine"}, {"UpperChest", "Chest"}, {"Neck", "UpperChest"}, {"Head", "Neck"},
+      {"RightShoulder", "UpperChest"}, {"RightUpperArm", "RightShoulder"}, {"RightLowerArm", "RightUpperArm"},
+      {"RightHand", "RightLowerArm"}, {"LeftShoulder", "UpperChest"}, {"LeftUpperArm", "LeftShoulder"},
+      {"LeftLowerArm", "LeftUpperArm"}, {"LeftHand", "LeftLowerArm"}, {"RightUpperLeg", "Hips"},
+      {"RightLowerLeg", "RightUpperLeg"}, {"RightFoot", "RightLowerLeg"}, {"LeftUpperLeg", "Hips"},
+      {"LeftLowerLeg", "LeftUpperLeg"}, {"LeftFoot", "LeftLowerLeg"}};
+  std::map<std::string, const OscMessage*> local;
+  const OscMessage* root = nullptr;
+  for (const OscMessage& m : bundle) {
+    if (m.address == "/VMC/Ext/Bone/Pos") local[m.name] = &m;
+    if (m.address == "/VMC/Ext/Root/Pos") root = &m;
+  }
+  REQUIRE(root);
+  REQUIRE(local.count("Hips"));
+  struct Pose { Eigen::Vector3d p; Eigen::Quaterniond q; };
+  std::map<std::string, Pose> world;
+  world["Hips"] = {position(*root) + quaternion(*root) * position(*local["Hips"]),
+                   quaternion(*root) * quaternion(*local["Hips"])};
+  // Parents before children: a bone is placed once its parent is.
+  for (bool placed = true; placed;) {
+    placed = false;
+    for (const auto& [name, m] : local) {
+      if (world.count(name) || !parent.count(name) || !world.count(parent.at(name))) continue;
+      const Pose& up = world.at(parent.at(name));
+      world[name] = {up.p + up.q * position(*m), up.q * quaternion(*m)};
+      placed = true;
+    }
+  }
+  std::map<std::string, Eigen::Vector3d> out;
+  for (const auto& [name, w] : world) out[name] = w.p;
+  return out;
+}
+
 }  // namespace
+
+TEST_CASE("VMC output rebuilds the solved skeleton in a receiver: every joint where octocap solved it", "[vmc]") {
+  uint16_t port = 0;
+  const int sock = bind_udp(0, port);
+  REQUIRE(sock >= 0);
+  timeval tv{2, 0};
+  setsockopt(sock, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
+  const std::string sample = std::string(OCTOCAP_SOURCE_DIR) + "/data/sample";
+  octocap_calibration_t* c = nullptr;
+  REQUIRE(octocap_calibration_load((sample + "/calibration.toml").c_str(), &c) == OCTOCAP_OK);
+  testing::Calib calib(c);
+  octocap_recording_t* rec = nullptr;
+  REQUIRE(octocap_recording_open((sample + "/keypoints").c_str(), OCTOCAP_LAYOUT_AUTO, &rec) == OCTOCAP_OK);
+  octocap_session_config_t cfg;
+  octocap_session_config_init(&cfg);
+  cfg.vmc_port = port;
+  testing::Session s = testing::make_session(calib.get(), cfg);
+  std::vector<octocap_keypoint2d_t> buf(4096);
+  uint32_t people[8], n = 0;
+  // Each received bone's position against the joint octocap solved there (Unity's frame, metres).
+  const std::pair<const char*, int> at_head_of[] = {
+      {"Spine", OCTOCAP_BONE_TORSO},           {"Neck", OCTOCAP_BONE_HEAD},
+      {"LeftUpperArm", OCTOCAP_BONE_L_UPPER_ARM}, {"LeftLowerArm", OCTOCAP_BONE_L_LOWER_ARM},
+      {"RightUpperArm", OCTOCAP_BONE_R_UPPER_ARM}, {"RightLowerArm", OCTOCAP_BONE_R_LOWER_ARM},
+      {"LeftUpperLeg", OCTOCAP_BONE_L_UPPER_LEG}, {"LeftLowerLeg", OCTOCAP_BONE_L_LOWER_LEG},
+      {"RightUpperLeg", OCTOCAP_BONE_R_UPPER_LEG}, {"RightLowerLeg", OCTOCAP_BONE_R_LOWER_LEG},
+      {"LeftFoot", OCTOCAP_BONE_L_FOOT},       {"RightFoot", OCTOCAP_BONE_R_FOOT}};
+  double worst = 0;
+  for (uint32_t f = 0; f < 30; f += 3) {
+    REQUIRE(octocap_recording_read_frame(rec, f, buf.data(), 4096, &n, people, 5) == OCTOCAP_OK);
+    REQUIRE(octocap_session_solve_keypoints(s.get(), buf.data(), people, 5, f * 33333) == OCTOCAP_OK);
+    std::vector<uint8_t> packet(65536);
+    const ssize_t got = recv(sock, packet.data(), packet.size(), 0);
+    REQUIRE(got > 0);
+    packet.resize(static_cast<size_t>(got));
+    const auto rebuilt = rebuild_pose(parse_bundle(packet));
+    octocap_bone_pose_t bones[OCTOCAP_BONE_COUNT];
+    REQUIRE(octocap_session_get_bones(s.get(), OCTOCAP_FRAME_UNITY, bones, OCTOCAP_BONE_COUNT, &n) == OCTOCAP_OK);
+    for (const auto& [name, bone] : at_head_of) {
+      INFO("frame " << f << ", " << name);
+      REQUIRE(bones[bone].valid);
+      REQUIRE(rebuilt.count(name));
+      const Eigen::Vector3d solved(bones[bone].head_position[0], bones[bone].head_position[1],
+                                   bones[bone].head_position[2]);
+      const double error = (rebuilt.at(name) - solved).norm();
+      CHECK(error < 0.02);  // the rest pose's straight hips and shoulders against the solved ones: millimetres
+      worst = std::max(worst, error);
+    }
+    // The head bone ends at the head joint: Head is half way along it.
+    const Eigen::Vector3d neck(bones[OCTOCAP_BONE_HEAD].head_position[0], bones[OCTOCAP_BONE_HEAD].head_position[1],
+                               bones[OCTOCAP_BONE_HEAD].head_position[2]);
+    CHECK(std::abs((rebuilt.at("Head") - neck).norm() - bones[OCTOCAP_BONE_HEAD].length_m / 2) < 0.005);
+  }
+  INFO("worst joint " << worst * 1000 << " mm");
+  CHECK(worst > 0);  // compared for real
+  octocap_recording_destroy(rec);
+  close(sock);
+}
 
 TEST_CASE("VMC output with several people: a port each, kept while tracked, OK 0 once when the person goes",
           "[vmc][people]") {
@@ -276,11 +385,17 @@ TEST_CASE("VMC output: a real OSC receiver gets every bone as octocap solved it,
     uint32_t valid = 0;
     for (const octocap_bone_pose_t& b : bones) valid += b.valid;
     REQUIRE(valid == OCTOCAP_BONE_COUNT - 2);
-    REQUIRE(by_bone.size() == valid);
+    // The torso goes out as Spine, Chest and UpperChest, the head bone as Neck and Head: three names more.
+    REQUIRE(by_bone.size() == valid + 3);
     REQUIRE(by_bone.count("RightHand") == 0);
+    for (const char* name : {"Hips", "Spine", "Chest", "UpperChest", "Neck", "Head"}) CHECK(by_bone.count(name) == 1);
+    const Eigen::Quaterniond back =
+        quaternion(by_bone.at("Spine")) * quaternion(by_bone.at("Chest")) * quaternion(by_bone.at("UpperChest"));
+    const octocap_quat_t& torso = bones[OCTOCAP_BONE_TORSO].local_rotation;
+    CHECK(back.angularDistance(Eigen::Quaterniond(torso.w, torso.x, torso.y, torso.z)) < 1e-5);
     const std::pair<const char*, int> checks[] = {{"LeftLowerArm", OCTOCAP_BONE_L_LOWER_ARM},
                                                   {"RightUpperLeg", OCTOCAP_BONE_R_UPPER_LEG},
-                                                  {"Spine", OCTOCAP_BONE_TORSO}};
+                                                  {"LeftShoulder", OCTOCAP_BONE_L_SHOULDER}};
     for (const auto& [name, bone] : checks) {
       INFO(name);
       const OscMessage& m = by_bone.at(name);

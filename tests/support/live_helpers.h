@@ -1,6 +1,11 @@
 // What the live-capture tests share: the real take's files, the session and detector they run, waiting on a
 // condition without asserting wall-clock speed.
 #pragma once
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -58,6 +63,22 @@ bool wait_until(Pred&& done, int timeout_ms) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   return done();
+}
+
+// Whether a server on loopback accepts connections on `port` within `timeout_ms`: a test's servers (a Python RTSP
+// server imports GStreamer first, seconds on a cold machine) are up before the cameras that use them are opened.
+inline bool port_accepts(int port, int timeout_ms) {
+  return wait_until([&] {
+    const int fd = socket(AF_INET, SOCK_STREAM, 0);
+    if (fd < 0) return false;
+    sockaddr_in addr{};
+    addr.sin_family = AF_INET;
+    addr.sin_port = htons(static_cast<uint16_t>(port));
+    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    const bool ok = connect(fd, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) == 0;
+    close(fd);
+    return ok;
+  }, timeout_ms);
 }
 
 // Takes up to `attempts` frames (2 s each) until `wanted` of them show the person in exactly `views` views; returns

@@ -25,7 +25,9 @@ GroundTruth read_ground_truth_csv(const std::string& path) {
   if (!std::getline(in, line)) throw std::runtime_error(path + ": empty file");
   const auto header = split(line);
   GroundTruth gt;
-  for (size_t i = 1; i + 2 < header.size(); i += 3) {
+  // frame[,time],NAME_x,NAME_y,NAME_z,... (octocap's CSV, with its time column since 1.6)
+  const size_t first = header.size() > 1 && header[1] == "time" ? 2 : 1;
+  for (size_t i = first; i + 2 < header.size(); i += 3) {
     const std::string& h = header[i];
     if (h.size() < 3 || h.compare(h.size() - 2, 2, "_x") != 0)
       throw std::runtime_error(path + ": header column '" + h + "' is not NAME_x");
@@ -39,7 +41,7 @@ GroundTruth read_ground_truth_csv(const std::string& path) {
     std::vector<std::array<double, 3>> frame(gt.names.size(), {NAN, NAN, NAN});
     for (size_t k = 0; k < gt.names.size(); ++k)
       for (int c = 0; c < 3; ++c) {
-        const size_t idx = 1 + 3 * k + c;
+        const size_t idx = first + 3 * k + c;
         if (idx < cells.size() && !cells[idx].empty()) {
           try {
             frame[k][c] = std::stod(cells[idx]);

@@ -1,6 +1,8 @@
 #include "image_source.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <future>
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
@@ -61,6 +63,11 @@ ImageSource::ImageSource(const std::string& folder) {
       if (!cam->capture.isOpened()) throw std::runtime_error("cannot open video " + v.string());
       const auto n = static_cast<size_t>(std::max(0.0, cam->capture.get(cv::CAP_PROP_FRAME_COUNT)));
       frames_ = cameras_.empty() ? n : std::min(frames_, n);
+      const double fps = cam->capture.get(cv::CAP_PROP_FPS);
+      if (cameras_.empty() && std::isfinite(fps) && fps > 0 && fps <= 1e5) fps_ = fps;
+      else if (fps_ > 0 && std::abs(fps - fps_) > 0.01 * fps_)
+        std::fprintf(stderr, "octocap: warning: %s says %.3g frames/s, %s %.3g: the first camera's rate is used\n",
+                     v.filename().string().c_str(), fps, names_.front().c_str(), fps_);
       names_.push_back(v.stem().string());
       cameras_.push_back(std::move(cam));
     }

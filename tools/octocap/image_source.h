@@ -15,6 +15,8 @@ class ImageSource {
   size_t camera_count() const { return names_.size(); }
   size_t frame_count() const { return frames_; }
   const std::vector<std::string>& camera_names() const { return names_; }
+  // The videos' frame rate (the first camera's; a warning when the others differ); 0 for picture folders.
+  double fps() const { return fps_; }
   // BGR images of every camera for frame f (frames are read in order; going back re-opens the videos). While the
   // caller works on frame f, frame f + 1 is decoded on another thread (decoding four 1088x1920 H.264 streams costs
   // about 18 ms a frame: hidden behind detection instead of added to it).
@@ -26,6 +28,7 @@ class ImageSource {
   std::vector<std::string> names_;
   std::vector<std::unique_ptr<Camera>> cameras_;
   size_t frames_ = 0;
+  double fps_ = 0;
   std::future<std::vector<cv::Mat>> ahead_;  // the next frame, decoding (declared last: joined first)
   size_t ahead_frame_ = 0;
 };

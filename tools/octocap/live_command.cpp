@@ -52,8 +52,9 @@ int live(const LiveOptions& o) {
     quiet.vmc_port = 0;
     up = octocap::Session(quiet, calib).up_axis();
   }
-  // A live take's rate is the cameras'; the files say the nominal one, the frames keep their real timestamps.
-  TakeWriters writers(o.output, o.csv, o.bvh, OCTOCAP_LAYOUT_COCO_17, up, o.picture_rate_hz, scfg.max_people != 1);
+  // A live take's sets come when the cameras and the host allow: the CSV keeps each set's time, TRC and BVH rows are
+  // resampled to the take's mean rate, or to --rate.
+  TakeWriters writers(o.output, o.csv, o.bvh, OCTOCAP_LAYOUT_COCO_17, up, o.rate_hz, scfg.max_people != 1);
 
   live_common::catch_interrupts();
   capture.start();
@@ -79,8 +80,10 @@ int live(const LiveOptions& o) {
   }
   capture.stop();
   if (!o.quiet) std::fprintf(stderr, "\n");
-  writers.close();
   const octocap_live_stats_t s = capture.stats();
+  // A take with nobody in any set is no take: no files, and a failure that says why.
+  const bool captured = s.frames_with_person > 0 && !s.failed;
+  if (captured) writers.close();
   std::printf("octocap live: %u cameras, %llu frame sets solved (%llu with a person, %llu without every camera), "
               "%llu frames taken\n",
               s.camera_count, static_cast<unsigned long long>(s.frame_sets),
@@ -98,14 +101,30 @@ int live(const LiveOptions& o) {
                 static_cast<unsigned long long>(cam.reconnects), cam.fps, cam.nominal_fps);
     if (o.cameras[c].rfind("dds://", 0) == 0) std::printf(", %s, clock offset %.1f ms", o.cameras[c].c_str(), cam.clock_offset_ms);
     else if (cam.stream_clock) std::printf(", times from the stream's clock");
+    if (cam.last_error[0]) std::printf("; last error: %s", cam.last_error);
     std::printf("\n");
   }
-  if (!o.output.empty() || !o.csv.empty() || !o.bvh.empty()) std::printf("  wrote %s\n", writers.written().c_str());
+  if (captured && (!o.output.empty() || !o.csv.empty() || !o.bvh.empty()))
+    std::printf("  wrote %s\n", writers.written().c_str());
   if (!o.record.empty())
     std::printf("  recorded %llu frame sets into %s (pictures left out of %llu: the disk was behind)\n",
                 static_cast<unsigned long long>(s.sets_recorded), o.record.c_str(),
                 static_cast<unsigned long long>(s.recording_pictures_dropped));
-  return 0;
+  if (captured) return 0;
+  if (s.failed) {
+    std::fprintf(stderr, "octocap live: error: stopped: %s\n", s.last_error);
+  } else {
+    std::fprintf(stderr, "octocap live: error: nothing was captured: no frame set had a person%s\n",
+                 o.output.empty() && o.csv.empty() && o.bvh.empty() ? "" : " (no file written)");
+    for (uint32_t c = 0; c < s.camera_count; ++c) {
+      const octocap_camera_status_t cam = capture.camera(c);
+      if (cam.used == 0)
+        std::fprintf(stderr, "  camera %s (number %u) delivered nothing%s%s\n", cam.name, c + 1,
+                     cam.last_error[0] ? ": " : "", cam.last_error);
+    }
+    if (s.last_error[0]) std::fprintf(stderr, "  the last frame set failed with: %s\n", s.last_error);
+  }
+  return 1;
 }
 
 }  // namespace

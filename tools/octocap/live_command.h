@@ -11,6 +11,7 @@ struct LiveOptions {
   std::string record;                // a folder: pictures, 2D keypoints, times (octocap solve reads it again)
   double duration_s = 0;             // 0: until the cameras end (files) or Ctrl-C
   double picture_rate_hz = 30;
+  double rate_hz = 0;                // TRC and BVH rows; 0: the take's own mean set rate
   DetectorOptions detector;
   std::string method = "auto";
   std::string filter = "oneeuro";

@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
                  "oneeuro-fixed: before 1.4's)")->check(CLI::IsMember({"none", "oneeuro", "oneeuro-fixed"}))->capture_default_str();
   sc->add_option("--layout", solve.layout, "Keypoint layout: auto, BODY_25, BODY_25B, COCO_17, HALPE_26, BLAZEPOSE_33")->capture_default_str();
   sc->add_option("--up", solve.up, "World up axis of the calibration")->check(CLI::IsMember({"auto", "y", "z"}))->capture_default_str();
-  sc->add_option("--rate", solve.rate_hz, "Frame rate of the recording, Hz")->check(CLI::PositiveNumber)->capture_default_str();
+  sc->add_option("--rate", solve.rate_hz, "Frame rate of the recording, Hz (default: with --images the videos' own, else 30)")->check(CLI::PositiveNumber);
   sc->add_option("--threads", solve.threads, "Worker threads (0: all cores)")->capture_default_str();
   add_people_option(sc, solve.people);
   sc->add_option("--sync", solve.sync, "Sync TOML (octocap sync): each camera's keypoints taken at its own time offset")->check(CLI::ExistingFile);
@@ -102,7 +102,8 @@ int main(int argc, char** argv) {
   lv->add_option("--camera", live.cameras, "A camera, once per camera in calibration order: /dev/videoN or N, rtsp://..., http://... (MJPEG), a video file, a picture folder, or dds://NODE/CAMERA (a capture node's keypoints, on --domain/--topic)")->required();
   lv->add_option("--calibration", live.calibration, "Calibration TOML (anipose / Pose2Sim)")->required()->check(CLI::ExistingFile);
   lv->add_option("--duration", live.duration_s, "Stop after this many seconds (0: when the cameras end, or Ctrl-C)")->capture_default_str();
-  lv->add_option("--picture-rate", live.picture_rate_hz, "Rate of picture-folder cameras, and the rate written to the TRC")->check(CLI::PositiveNumber)->capture_default_str();
+  lv->add_option("--picture-rate", live.picture_rate_hz, "Rate of picture-folder cameras")->check(CLI::PositiveNumber)->capture_default_str();
+  lv->add_option("--rate", live.rate_hz, "TRC and BVH rows at this fixed rate, Hz, the sets resampled onto it (default: the take's own mean set rate); the CSV keeps each set's time")->check(CLI::PositiveNumber);
   lv->add_option("--output", live.output, "Write the take as TRC");
   lv->add_option("--csv", live.csv, "Also write a CSV (calibration world frame)");
   lv->add_option("--bvh", live.bvh, "Also write the bone animation as BVH");
@@ -125,11 +126,11 @@ int main(int argc, char** argv) {
   CLI::App* lc = app.add_subcommand("layouts", "List the keypoint layouts and their keypoints");
 
   CLI11_PARSE(app, argc, argv);
-  if (sc->parsed()) return run_solve(solve);
   if (sc->parsed() && solve.keypoints.empty() && solve.images.empty()) {
     std::fprintf(stderr, "octocap solve: give --keypoints or --images\n");
     return 2;
   }
+  if (sc->parsed()) return run_solve(solve);
   if (dc->parsed()) return run_detect(detect);
   if (lv->parsed()) return run_live(live);
   if (sy->parsed()) return run_sync(sync);

@@ -68,7 +68,7 @@ void write_debug_images(const octocap::Session& session, const octocap_calibrati
 
 int solve(const SolveOptions& o) {
   octocap_set_log_callback(log_to_stderr, OCTOCAP_LOG_WARNING, nullptr);
-  if (!std::isfinite(o.rate_hz) || o.rate_hz < 1e-3 || o.rate_hz > 1e5)
+  if (!std::isfinite(o.rate_hz) || (o.rate_hz != 0 && (o.rate_hz < 1e-3 || o.rate_hz > 1e5)))
     throw std::runtime_error("--rate must be between 0.001 and 100000 Hz");
   const octocap::Calibration calib = octocap::Calibration::load(o.calibration);
   const uint32_t cameras = calib.camera_count();
@@ -96,6 +96,8 @@ int solve(const SolveOptions& o) {
     frames = rec->frame_count();
     layout = rec->layout();
   }
+  // The take's rate: --rate, else the videos' own (a 60 fps take written at 30 Hz plays twice as slow), else 30.
+  const double rate_hz = o.rate_hz > 0 ? o.rate_hz : source && source->fps() > 0 ? source->fps() : 30.0;
   if (o.start_frame >= frames)
     throw std::runtime_error("--start-frame " + std::to_string(o.start_frame) + " is past the last frame (" +
                              std::to_string(frames) + " frames)");
@@ -130,7 +132,7 @@ int solve(const SolveOptions& o) {
   const std::string method_name = session.method() == OCTOCAP_METHOD_TRIANGULATION ? "triangulation" : "subdivision";
 
   // Each file is written when closed at the end; a take that fails on the way leaves none behind.
-  TakeWriters writers(o.output, o.csv, o.bvh, layout, up, o.rate_hz, several);
+  TakeWriters writers(o.output, o.csv, o.bvh, layout, up, rate_hz, several);
 
   const uint32_t K = octocap_layout_keypoint_count(layout);
   GroundTruth gt;
@@ -169,10 +171,10 @@ int solve(const SolveOptions& o) {
   for (uint32_t f = o.start_frame; f < frames; ++f) {
     if (o.out.publish || o.out.vmc_port) {
       // Stream at the recording's own rate, as a live rig would.
-      const auto due = start + std::chrono::microseconds(static_cast<int64_t>((f - o.start_frame) * 1e6 / o.rate_hz));
+      const auto due = start + std::chrono::microseconds(static_cast<int64_t>((f - o.start_frame) * 1e6 / rate_hz));
       std::this_thread::sleep_until(due);
     }
-    const int64_t t_us = static_cast<int64_t>(std::llround(f * 1e6 / o.rate_hz));
+    const int64_t t_us = static_cast<int64_t>(std::llround(f * 1e6 / rate_hz));
     octocap_result_t r = OCTOCAP_OK;  // or OCTOCAP_STATUS_NO_PERSON
     std::vector<cv::Mat> images;
     if (source) {

@@ -15,7 +15,7 @@ struct SolveOptions {
   std::string up = "auto";
   unsigned sigma = 0;
   double delta_mm = 10.0;
-  double rate_hz = 30.0;
+  double rate_hz = 0;  // 0: the videos' own rate with --images, else 30
   unsigned threads = 0;
   bool quiet = false;
   OutputOptions out;  // DDS and VMC, paced at --rate

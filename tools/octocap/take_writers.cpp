@@ -35,8 +35,8 @@ TakeWriters::Take& TakeWriters::take_of(uint32_t id) {
   Take t{id, {}};
   if (!trc_.empty()) t.writers.emplace_back(person_path(trc_, id), OCTOCAP_MOTION_TRC, layout_, up_, rate_);
   if (!bvh_.empty()) t.writers.emplace_back(person_path(bvh_, id), OCTOCAP_MOTION_BVH, layout_, up_, rate_);
-  for (size_t f = 0; f < frames_; ++f)
-    for (octocap::MotionWriter& w : t.writers) w.add_empty();
+  for (int64_t time_us : times_us_)
+    for (octocap::MotionWriter& w : t.writers) w.add_empty(time_us);
   takes_.push_back(std::move(t));
   return takes_.back();
 }
@@ -46,7 +46,8 @@ void TakeWriters::add(const octocap::Frame& frame) {
     for (octocap::MotionWriter& w : shared_) w.add(frame, 0);
     return;
   }
-  const uint32_t present = frame.person_count();
+  const octocap_frame_summary_t summary = frame.summary();
+  const uint32_t present = summary.person_count;
   std::vector<uint32_t> seen;
   for (uint32_t i = 0; i < present; ++i) {
     for (octocap::MotionWriter& w : shared_) w.add(frame, i);
@@ -56,8 +57,8 @@ void TakeWriters::add(const octocap::Frame& frame) {
   }
   for (Take& t : takes_)
     if (std::find(seen.begin(), seen.end(), t.id) == seen.end())
-      for (octocap::MotionWriter& w : t.writers) w.add_empty();
-  ++frames_;
+      for (octocap::MotionWriter& w : t.writers) w.add_empty(summary.timestamp_us);
+  times_us_.push_back(summary.timestamp_us);
 }
 
 void TakeWriters::close() {

@@ -12,7 +12,8 @@ uint32_t max_people_of(const std::string& people);
 
 class TakeWriters {
  public:
-  // Empty paths are not written.
+  // Empty paths are not written. `rate_hz` 0: TRC and BVH at the take's own mean rate (a live take), see
+  // octocap_motion_writer_create().
   TakeWriters(std::string trc, std::string csv, std::string bvh, octocap_layout_t layout, octocap_up_axis_t up,
               double rate_hz, bool several);
   void add(const octocap::Frame& frame);
@@ -34,5 +35,5 @@ class TakeWriters {
   bool several_;
   std::vector<octocap::MotionWriter> shared_;  // one person: all files; several: the CSV
   std::vector<Take> takes_;                    // several: per person
-  size_t frames_ = 0;
+  std::vector<int64_t> times_us_;              // several: each frame's time, for a person who comes later
 };

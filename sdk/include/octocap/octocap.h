@@ -95,6 +95,8 @@ extern "C" {
 
 /** Length of the fixed-size name fields, including the terminating NUL. */
 #define OCTOCAP_NAME_CAPACITY 32
+/** Capacity of the error texts of status structs (1.6), NUL included; longer ones are cut. */
+#define OCTOCAP_ERROR_TEXT_CAPACITY 256
 
 /** Result of every fallible call. */
 typedef int32_t octocap_result_t;
@@ -841,6 +843,13 @@ typedef struct octocap_live_stats_t {
   uint64_t sets_recorded;        /**< Frame sets written by the recording (octocap_live_set_recording()). */
   uint64_t recording_pictures_dropped; /**< Of those, sets whose pictures were left out: the disk was behind (their
                                       keypoints and times are there; every camera's pictures of a set go together). */
+  /* 1.6 */
+  uint32_t failed;               /**< 1: the engine stopped on an error it cannot go on from, said in last_error: a
+                                      camera whose pictures have another aspect ratio than its calibration (another
+                                      camera, or the cameras given in another order). `finished` is 1 too; call
+                                      octocap_live_stop() as always. */
+  char last_error[OCTOCAP_ERROR_TEXT_CAPACITY]; /**< The last error ("" none): what failed the engine, a frame set
+                                      that could not be solved (the engine goes on), the recording's write error. */
 } octocap_live_stats_t;
 
 /** State of one camera. */
@@ -878,6 +887,9 @@ typedef struct octocap_camera_status_t {
                                       from when the host grabbed each picture (files, sources without timestamps, a
                                       stream's first seconds and after a reconnect), late by however long decoding
                                       took on a busy host, so a set may pair pictures of different instants. */
+  /* 1.6 */
+  char last_error[OCTOCAP_ERROR_TEXT_CAPACITY]; /**< Why the camera last failed to open or broke ("" never): refused,
+                                      not found, timed out, not a picture. Kept after it reconnected. */
 } octocap_camera_status_t;
 
 /**
@@ -1232,17 +1244,29 @@ typedef int32_t octocap_motion_format_t;
 /** Values of ::octocap_motion_format_t. */
 enum octocap_motion_format_values {
   OCTOCAP_MOTION_TRC = 0, /**< OpenSim TRC, Y up (Z-up worlds are turned as Pose2Sim does), metres. */
-  OCTOCAP_MOTION_CSV = 1, /**< `frame,NAME_x,NAME_y,NAME_z,...`, calibration world frame, empty cells when missing. */
+  OCTOCAP_MOTION_CSV = 1, /**< `frame,time,NAME_x,NAME_y,NAME_z,...`, calibration world frame, empty cells when
+                               missing; `time` (1.6) in seconds from the take's first frame, from the frames'
+                               timestamps (a live take's real set times). Readers accept CSVs without it. */
   OCTOCAP_MOTION_BVH = 2, /**< The bone animation: one joint per bone (Mixamo-style names), median bone lengths,
                                rig frame (Y up), centimetres. Frames come from octocap_motion_writer_add(). */
-  OCTOCAP_MOTION_CSV_PEOPLE = 3 /**< (1.3) Several people: `frame,person,NAME_x,NAME_y,NAME_z,...`, one row per
+  OCTOCAP_MOTION_CSV_PEOPLE = 3 /**< (1.3) Several people: `frame,time,person,NAME_x,NAME_y,NAME_z,...` (`time`
+                                     since 1.6), one row per
                                      octocap_motion_writer_add() of a person present (frame = the frame's index,
                                      person = its id), calibration world frame; empty frames add no row. */
 };
 
 /**
  * Creates a writer. The file is written on octocap_motion_writer_close() (TRC needs the frame count in its
- * header). `rate_hz` is the frame rate written to TRC.
+ * header).
+ *
+ * Time: each frame added keeps its timestamp (octocap_frame_summary_t.timestamp_us). The CSV says when each frame
+ * happened. TRC and BVH rows are 1 / rate apart, so when the frames are not (a live take's sets come as the cameras
+ * and the host allow) they are resampled onto that grid: positions interpolated, bone rotations slerped, nothing
+ * invented across a stretch of more than a quarter of a second without frames (missing there).
+ * `rate_hz`: the rate of TRC and BVH rows, 0.001 to 100000 Hz; or 0 (1.6): the frames' own mean rate, from their
+ * timestamps (what a live take should use unless a fixed rate is wanted). Frames whose timestamps do not increase
+ * (added with octocap_motion_writer_add_keypoints() or octocap_motion_writer_add_empty_frame(), or from solves all
+ * given one time) are taken to be 1 / rate apart, at 30 Hz when `rate_hz` is 0.
  */
 OCTOCAP_API octocap_result_t octocap_motion_writer_create(const char* path, octocap_motion_format_t format,
                                                           octocap_layout_t layout, octocap_up_axis_t up_axis,
@@ -1254,8 +1278,11 @@ OCTOCAP_API octocap_result_t octocap_motion_writer_add(octocap_motion_writer_t* 
 /** Appends `count` 3D keypoints (layout order, e.g. from octocap_frame_get_keypoints3d()). */
 OCTOCAP_API octocap_result_t octocap_motion_writer_add_keypoints(octocap_motion_writer_t* writer,
                                                                  const octocap_joint_t* keypoints, uint32_t count);
-/** Appends an empty frame (nothing solved). */
+/** Appends an empty frame (nothing solved), with no time of its own: the take is then taken as evenly spaced. */
 OCTOCAP_API octocap_result_t octocap_motion_writer_add_empty_frame(octocap_motion_writer_t* writer);
+/** (1.6) Appends an empty frame that happened at `timestamp_us` (the same clock as the frames added). */
+OCTOCAP_API octocap_result_t octocap_motion_writer_add_empty_frame_at(octocap_motion_writer_t* writer,
+                                                                      int64_t timestamp_us);
 /** Writes the file and destroys the writer (also on failure). NULL is accepted. */
 OCTOCAP_API octocap_result_t octocap_motion_writer_close(octocap_motion_writer_t* writer);
 /** Destroys the writer without writing anything (a take that failed leaves no partial file). NULL is accepted. */
@@ -1269,6 +1296,11 @@ typedef struct octocap_motion_t octocap_motion_t;
  * names, a Z-up CSV is turned upright) or a BVH (CMU, Mixamo-style or octocap's own joint names; units found
  * from the skeleton's size). Fails with OCTOCAP_ERROR_IO, OCTOCAP_ERROR_PARSE (no humanoid skeleton found) or
  * OCTOCAP_ERROR_INVALID_ARGUMENT (an unknown extension).
+ *
+ * (1.6) A several-people CSV (OCTOCAP_MOTION_CSV_PEOPLE) gives frames with each person present, under the ids the
+ * file gives them; every other file holds one person, id 1. Frames are 1 / rate apart: a file that says its frames
+ * came unevenly (a live take's CSV `time` column) is resampled at its mean rate, and the rate is that of its
+ * times; frame i's timestamp_us is i / rate.
  */
 OCTOCAP_API octocap_result_t octocap_motion_open(const char* path, octocap_motion_t** out);
 /** Destroys a motion; NULL is accepted. */

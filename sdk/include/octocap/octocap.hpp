@@ -344,6 +344,9 @@ class MotionWriter {
   }
   void add(const Frame& frame, uint32_t person = 0) { check(octocap_motion_writer_add(w_.get(), frame.get(), person), "writing a frame"); }
   void add_empty() { check(octocap_motion_writer_add_empty_frame(w_.get()), "writing a frame"); }
+  void add_empty(int64_t timestamp_us) {
+    check(octocap_motion_writer_add_empty_frame_at(w_.get(), timestamp_us), "writing a frame");
+  }
   void close() { check(octocap_motion_writer_close(w_.release()), "writing the file"); }
 
  private:

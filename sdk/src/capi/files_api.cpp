@@ -146,6 +146,10 @@ octocap_result_t octocap_motion_writer_add_empty_frame(octocap_motion_writer_t* 
   return capi::guard([&] { capi::checked(w, "motion writer")->writer->add_empty(); });
 }
 
+octocap_result_t octocap_motion_writer_add_empty_frame_at(octocap_motion_writer_t* w, int64_t timestamp_us) {
+  return capi::guard([&] { capi::checked(w, "motion writer")->writer->add_empty(timestamp_us); });
+}
+
 octocap_result_t octocap_motion_writer_close(octocap_motion_writer_t* w) {
   if (!w) return OCTOCAP_OK;
   const octocap_result_t r = capi::guard([&] { capi::checked(w, "motion writer")->writer->close(); });

@@ -51,7 +51,7 @@ struct octocap_motion_writer_t {
 
 struct octocap_motion_t {
   octocap::SkeletonMotion motion;
-  std::vector<octocap::SkeletonPose> bones;  // solved once at open, per frame
+  std::vector<std::vector<octocap::SkeletonPose>> bones;  // solved once at open, [person][frame]
   uint32_t definition_counter = 0;
 };
 

@@ -36,6 +36,7 @@ void fill_camera_status(const FeedStatus& s, const std::string& name, octocap_ca
     copy_name(o.name, sizeof o.name, name);
     o.clock_offset_ms = static_cast<float>(s.clock_offset_ms);
     o.stream_clock = s.stream_clock ? 1 : 0;
+    copy_name(o.last_error, sizeof o.last_error, s.last_error);
   });
 }
 
@@ -188,6 +189,8 @@ octocap_result_t octocap_live_get_stats(const octocap_live_t* l, octocap_live_st
       o.latency_p99_ms = static_cast<float>(s.latency_p99_ms);
       o.sets_recorded = s.sets_recorded;
       o.recording_pictures_dropped = s.recording_pictures_dropped;
+      o.failed = s.failed ? 1 : 0;
+      capi::copy_name(o.last_error, sizeof o.last_error, s.last_error);
     });
   });
 }

@@ -1,6 +1,7 @@
 #include "capture/camera_feed.h"
 
 #include <algorithm>
+#include <exception>
 #include <chrono>
 
 #include "capture/stream_clock.h"
@@ -48,7 +49,7 @@ bool CameraFeed::reopen() {
       status_.state = FeedState::streaming;
       log(LogLevel::info, "camera '" + spec_.text + "': reconnected");
       return true;
-    } catch (const Error& e) {
+    } catch (const std::exception& e) {  // octocap's, OpenCV's, the allocator's: no thread ends the process
       set_error(e.what());
     }
     wait_ms = std::min(2 * wait_ms, options_.reconnect_max_ms);
@@ -68,7 +69,7 @@ void CameraFeed::run() {
     bool ok = false;
     try {
       ok = source_->read(image, stream_us);
-    } catch (const Error& e) {
+    } catch (const std::exception& e) {  // octocap's, OpenCV's, the allocator's: no thread ends the process
       set_error(e.what());
     }
     if (!ok) {

@@ -78,4 +78,13 @@ Eigen::Vector3d matrix_to_rodrigues(const Eigen::Matrix3d& R) {
   return aa.axis() * aa.angle();
 }
 
+std::string picture_mismatch(const Camera& cam, int width, int height) {
+  if (cam.width <= 0 || cam.height <= 0 || width <= 0 || height <= 0) return "";
+  const double sx = static_cast<double>(cam.width) / width, sy = static_cast<double>(cam.height) / height;
+  if (std::abs(sx / sy - 1) <= 0.01) return "";
+  return "its pictures are " + std::to_string(width) + "x" + std::to_string(height) + ", camera " + cam.name +
+         " was calibrated at " + std::to_string(cam.width) + "x" + std::to_string(cam.height) +
+         " (another aspect ratio: not the same picture; is it the camera the calibration means?)";
+}
+
 }  // namespace octocap

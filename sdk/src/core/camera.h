@@ -14,6 +14,13 @@ inline bool plausible_rotation_vector(const Eigen::Vector3d& r) { return r.allFi
 // Image sizes a camera can have (pixels, each side).
 constexpr double kMaxImageSide = 100000;
 
+struct Camera;
+
+// Why a picture of `width` x `height` cannot be this camera's ("" when it can): the same picture at another size (a
+// preview stream, a downscaled render) is fine, another aspect ratio is another picture, or another camera. The one
+// rule the offline solve and the live engine both apply.
+std::string picture_mismatch(const Camera& cam, int width, int height);
+
 struct Camera {
   std::string name;
   int width = 0;

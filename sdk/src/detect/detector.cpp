@@ -142,6 +142,17 @@ Detector::Detector(const DetectorConfig& config) : config_(config) {
   // Views in parallel share the cores: each inference gets its part unless the caller chose.
   const int intra = config.threads > 0 ? config.threads : parallel_ > 1 ? std::max(1, cores / parallel_) : 0;
   model_ = std::make_unique<OrtModel>(path_, card_, intra, config.device != Device::cpu, config.device == Device::cuda);
+  // One run on a blank canvas: a card whose outputs do not fit its kind fails here, once, at load, instead of on
+  // every frame of a live take that then solves nothing.
+  const auto [w, h] = input_size_for(static_cast<double>(card_.input_width) / card_.input_height);
+  RgbCanvas canvas;
+  canvas.reset(w, h);
+  try {
+    decode_pose(card_, model_->run(canvas), w, h, layout(card_.layout).keypoints.size());
+  } catch (const std::exception& e) {
+    throw Error(Errc::parse, "model " + card_.name + " (" + path_ + "): its outputs do not fit its card's output kind \"" +
+                                 output_kind_name(card_.output) + "\": " + e.what());
+  }
 }
 
 Detector::~Detector() = default;

@@ -16,12 +16,17 @@ const json& member(const json& object, const char* key, const std::string& where
   return *it;
 }
 
-int positive_int(const json& object, const char* key, const std::string& where) {
+// A positive integer up to `max`: a card's sizes are bounded where they are read, so that no edited card can ask the
+// detector for a canvas or a person count no machine holds.
+int positive_int(const json& object, const char* key, const std::string& where, int max) {
   const json& v = member(object, key, where);
-  if (!v.is_number_integer() || v.get<int>() <= 0)
-    throw Error(Errc::parse, where + ": \"" + key + "\" must be a positive integer");
+  if (!v.is_number_integer() || v.get<int64_t>() <= 0 || v.get<int64_t>() > max)
+    throw Error(Errc::parse, where + ": \"" + key + "\" must be a whole number from 1 to " + std::to_string(max));
   return v.get<int>();
 }
+
+// Network inputs beyond 4096 pixels a side exist nowhere in pose estimation (MoveNet takes 192-256, RTMPose 384).
+constexpr int kMaxInputSide = 4096;
 
 std::array<float, 3> triple(const json& object, const char* key, const std::string& where, float fallback) {
   auto it = object.find(key);
@@ -80,12 +85,12 @@ ModelCard read_model_card(const std::string& path) {
       throw Error(Errc::parse, path + ": unknown keypoint_layout \"" + layout + "\"");
     const std::string in_where = path + " input";
     const json& input = member(doc, "input", path);
-    card.input_width = positive_int(input, "width", in_where);
-    card.input_height = positive_int(input, "height", in_where);
+    card.input_width = positive_int(input, "width", in_where, kMaxInputSide);
+    card.input_height = positive_int(input, "height", in_where, kMaxInputSide);
     card.dynamic_size = input.value("dynamic_size", false);
     card.upright = input.value("upright", false);
     card.quantized = doc.value("quantized", false);
-    card.size_multiple = input.contains("size_multiple") ? positive_int(input, "size_multiple", in_where) : 1;
+    card.size_multiple = input.contains("size_multiple") ? positive_int(input, "size_multiple", in_where, 1024) : 1;
     card.element = choice<ElementType>(input, "element_type", in_where,
                                        {{"int32", ElementType::int32}, {"uint8", ElementType::uint8}, {"float32", ElementType::float32}});
     card.nchw = choice<bool>(input, "tensor_layout", in_where, {{"NHWC", false}, {"NCHW", true}});
@@ -98,7 +103,7 @@ ModelCard read_model_card(const std::string& path) {
                                      {{"movenet", OutputKind::movenet}, {"movenet_multipose", OutputKind::movenet_multipose},
                                       {"heatmap", OutputKind::heatmap}, {"simcc", OutputKind::simcc}, {"yolo_pose", OutputKind::yolo_pose},
                                       {"blazepose", OutputKind::blazepose}});
-    card.max_people = output.contains("max_people") ? positive_int(output, "max_people", out_where) : 1;
+    card.max_people = output.contains("max_people") ? positive_int(output, "max_people", out_where, 1000) : 1;
     card.simcc_ratio = output.value("simcc_ratio", 2.0);
     card.score_threshold = output.value("score_threshold", 0.25);
     return card;

@@ -17,14 +17,21 @@ struct MotionTrack {
   // A take of several people: each row is one person in one frame, (frame number, person id) per row.
   bool per_person = false;
   std::vector<std::pair<int64_t, uint32_t>> rows;
+  // When each frame (row) happened, seconds from the take's start; empty: frame f at f / rate_hz.
+  std::vector<double> times_s;
+  double time_of(size_t f) const { return f < times_s.size() ? times_s[f] : static_cast<double>(f) / rate_hz; }
 };
 
 // TRC as OpenSim reads it (Y up, metres). When `z_up` the positions are turned (x, y, z) -> (y, z, x),
 // Pose2Sim's zup2yup, so a Z-up lab world stands upright in OpenSim.
 void write_trc(const std::string& path, const MotionTrack& track, bool z_up);
-// `frame,NAME_x,NAME_y,NAME_z,...`, positions as given (the calibration's world), empty cells when missing;
-// `frame,person,NAME_x,...` for a per-person track (one row per person and frame).
+// `frame,time,NAME_x,NAME_y,NAME_z,...`, positions as given (the calibration's world), empty cells when missing,
+// time in seconds from the take's start; `frame,time,person,NAME_x,...` for a per-person track (one row per person
+// and frame).
 void write_csv(const std::string& path, const MotionTrack& track);
+// Reads what write_csv writes, and the CSVs of before 1.6 (no time column: frames at rate_hz, 30 unless given).
+// A per-person CSV comes back per_person with its rows. Throws Error(io / parse) naming the file and line.
+MotionTrack read_csv(const std::string& path, double rate_hz = 30);
 // Reads a TRC (positions as stored in the file; mm files are converted to metres).
 MotionTrack read_trc(const std::string& path);
 

@@ -1,6 +1,7 @@
 #include "pipeline/keypoint_node.h"
 
 #include <algorithm>
+#include <exception>
 #include <cstdlib>
 #include <chrono>
 #include <cstdio>
@@ -175,7 +176,7 @@ void KeypointNode::run(Camera& cam) {
     std::vector<std::vector<DetectedPerson>> found;
     try {
       found = cam.detector->detect({ImageView{m.data, m.cols, m.rows, static_cast<int>(m.step[0]), PixelFormat::bgr8}});
-    } catch (const Error& e) {
+    } catch (const std::exception& e) {  // octocap's, OpenCV's, the allocator's: no thread ends the process
       log(LogLevel::warning, "capture node: camera '" + cam.name + "': detection failed: " + e.what());
       continue;
     }
@@ -198,7 +199,7 @@ void KeypointNode::run(Camera& cam) {
     tick = (monotonic_to_wall_us(done_us) / next_period + 1) * next_period;
     try {
       publisher_->publish(view);
-    } catch (const Error& e) {
+    } catch (const std::exception& e) {  // octocap's, OpenCV's, the allocator's: no thread ends the process
       log(LogLevel::warning, "capture node: camera '" + cam.name + "': " + e.what());
       continue;
     }

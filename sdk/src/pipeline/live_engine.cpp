@@ -1,6 +1,7 @@
 #include "pipeline/live_engine.h"
 
 #include <algorithm>
+#include <exception>
 #include <chrono>
 
 #include "capture/camera_feed.h"
@@ -205,6 +206,15 @@ void LiveEngine::run() {
       present[c] = d.take[c] != 0 && feeds_[c]->take(d.take[c], frames[c]);
       if (present[c]) last_used[c] = frames[c].sequence;
     }
+    if (const std::string wrong = wrong_picture(frames, present); !wrong.empty()) {
+      // Not a set to drop and go on from: every later picture of that camera is as wrong, and a take that runs its
+      // whole duration solving nothing is a take lost.
+      log(LogLevel::error, "live: " + wrong);
+      const std::lock_guard<std::mutex> lock(mutex_);
+      stats_.last_error = wrong;
+      stats_.failed = true;
+      break;
+    }
     if (std::none_of(present.begin(), present.end(), [](bool p) { return p; })) {
       // Every camera ended and their last pictures make no set: nothing is left to solve.
       for (size_t c = 0; c < n; ++c) last_used[c] = std::max(last_used[c], candidates[c].newest.sequence);
@@ -213,8 +223,19 @@ void LiveEngine::run() {
     solve_set(frames, present, d.time_us);
   }
   const std::lock_guard<std::mutex> lock(mutex_);
-  stats_.finished = !stop_;
+  stats_.finished = !stop_ || stats_.failed;
   new_output_.notify_all();
+}
+
+std::string LiveEngine::wrong_picture(const std::vector<CapturedFrame>& frames, const std::vector<bool>& present) const {
+  for (size_t c = 0; c < frames.size(); ++c) {
+    if (!present[c]) continue;
+    const int width = frames[c].has_keypoints ? frames[c].width : frames[c].image.cols;
+    const int height = frames[c].has_keypoints ? frames[c].height : frames[c].image.rows;
+    const std::string mismatch = picture_mismatch(calib_[c], width, height);
+    if (!mismatch.empty()) return "camera '" + feeds_[c]->spec().text + "': " + mismatch;
+  }
+  return "";
 }
 
 void LiveEngine::solve_set(const std::vector<CapturedFrame>& frames, const std::vector<bool>& present,
@@ -236,7 +257,7 @@ void LiveEngine::solve_set(const std::vector<CapturedFrame>& frames, const std::
   bool solved = false;
   try {
     solved = session_->solve_images(views, set_time_us, given);
-  } catch (const Error& e) {
+  } catch (const std::exception& e) {  // octocap's, OpenCV's, the allocator's: no thread ends the process
     log(LogLevel::warning, std::string("live: a frame set could not be solved: ") + e.what());
     const std::lock_guard<std::mutex> lock(mutex_);
     stats_.last_error = e.what();

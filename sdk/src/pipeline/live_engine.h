@@ -53,6 +53,7 @@ struct LiveStats {
   uint64_t sets_recorded = 0;     // sets written by the recording (set_recording)
   uint64_t recording_pictures_dropped = 0;  // recorded sets whose pictures were left out (the disk was behind)
   std::string last_error;         // a solve that failed, or the recording's write error (the engine goes on)
+  bool failed = false;            // the engine stopped on an error it cannot go on from (last_error says which)
 };
 
 class LiveEngine {
@@ -86,6 +87,8 @@ class LiveEngine {
 
  private:
   void run();
+  // Why a picture of this set cannot be its camera's (another aspect ratio than its calibration), "" when all can.
+  std::string wrong_picture(const std::vector<CapturedFrame>& frames, const std::vector<bool>& present) const;
   void solve_set(const std::vector<CapturedFrame>& frames, const std::vector<bool>& present, int64_t set_time_us);
   void record(const std::vector<CapturedFrame>& frames, const std::vector<bool>& present, int64_t set_time_us);
   void add_recording_stats(LiveStats& s) const;  // the recording's figures into `s`, while there is a recording

@@ -81,11 +81,8 @@ bool Session::solve_images(const std::vector<ImageView>& images, int64_t timesta
         (cam.width == width && cam.height == height))
       continue;
     scale[v] = {static_cast<double>(cam.width) / width, static_cast<double>(cam.height) / height};
-    if (std::abs(scale[v].x() / scale[v].y() - 1) > 0.01)
-      throw Error(Errc::invalid_argument, "image " + std::to_string(v) + " is " + std::to_string(width) + "x" +
-                                              std::to_string(height) + ", camera " + cam.name + " was calibrated at " +
-                                              std::to_string(cam.width) + "x" + std::to_string(cam.height) +
-                                              " (another aspect ratio: not the same picture)");
+    const std::string mismatch = picture_mismatch(cam, width, height);
+    if (!mismatch.empty()) throw Error(Errc::invalid_argument, "image " + std::to_string(v) + ": " + mismatch);
   }
   if (any_image) {
     std::vector<std::vector<Person2D>> hints = reprojected_people();

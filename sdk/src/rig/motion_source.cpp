@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
+#include <cstdint>
 #include <limits>
-#include <sstream>
 
 #include "core/error.h"
+#include "core/take_timing.h"
 #include "io/bvh.h"
 #include "io/motion_files.h"
 
@@ -38,68 +38,99 @@ const KeypointLayout& layout_for_markers(const std::vector<std::string>& markers
   return *best;
 }
 
+// Joints interpolated between two frames (NaN where either is missing).
+SkeletonJoints blend(const SkeletonJoints& a, const SkeletonJoints& b, double w) {
+  SkeletonJoints out;
+  for (size_t j = 0; j < out.size(); ++j) out[j] = (1 - w) * a[j] + w * b[j];
+  return out;
+}
+
+// Frames at `times` (seconds) put 1 / rate apart at their mean rate, when they are not already.
+void put_on_even_rate(SkeletonMotion& m, const std::vector<double>& times) {
+  if (times.size() < 2 || times.size() != m.frames.size() || !times_increase(times)) return;
+  const double rate = mean_rate(times);
+  if (!(rate >= 1e-3 && rate <= 1e5)) return;
+  m.rate_hz = rate;
+  if (evenly_spaced(times, rate)) return;
+  SkeletonJoints missing;
+  missing.fill(Eigen::Vector3d::Constant(kNaN));
+  std::vector<std::vector<SkeletonJoints>> even;
+  for (const Resampled& r : resample_plan(times, rate, max_interpolated_gap_s(rate))) {
+    std::vector<SkeletonJoints> people(m.ids.size(), missing);
+    if (!r.gap)
+      for (size_t p = 0; p < people.size(); ++p) people[p] = blend(m.frames[r.before][p], m.frames[r.after][p], r.weight);
+    even.push_back(std::move(people));
+  }
+  m.frames = std::move(even);
+}
+
 SkeletonMotion from_track(const MotionTrack& track, const std::string& path, bool maybe_z_up) {
   const KeypointLayout& l = layout_for_markers(track.markers, path);
   SkeletonMotion m;
   m.rate_hz = track.rate_hz;
   m.source_kind = std::string(lower_extension(path) == "csv" ? "CSV" : "TRC") + " (" + l.name + ")";
-  for (const MarkerFrame& f : track.frames) {
+  std::vector<int> column(l.keypoints.size(), -1);  // each layout keypoint's marker
+  for (size_t k = 0; k < l.keypoints.size(); ++k)
+    for (size_t i = 0; i < track.markers.size(); ++i)
+      if (track.markers[i] == l.keypoints[k]) column[k] = static_cast<int>(i);
+  auto joints_of = [&](const MarkerFrame& f) {
     std::vector<Eigen::Vector3d> kp(l.keypoints.size(), Eigen::Vector3d::Constant(kNaN));
-    for (size_t k = 0; k < l.keypoints.size(); ++k)
-      for (size_t i = 0; i < track.markers.size(); ++i)
-        if (track.markers[i] == l.keypoints[k]) kp[k] = f[i];
-    m.frames.push_back(joints_from_keypoints(l, kp));
+    for (size_t k = 0; k < kp.size(); ++k)
+      if (column[k] >= 0) kp[k] = f[static_cast<size_t>(column[k])];
+    return joints_from_keypoints(l, kp);
+  };
+  std::vector<double> times;  // when each frame happened
+  if (!track.per_person) {
+    for (const MarkerFrame& f : track.frames) m.frames.push_back({joints_of(f)});
+    times = track.times_s;
+  } else {
+    // One frame per frame number from the first to the last, each person where their row is. Numbers without rows
+    // (sets where nobody was seen) are frames with nobody, timed between their neighbours.
+    m.ids.clear();
+    int64_t first = INT64_MAX, last = INT64_MIN;
+    for (const auto& row : track.rows) {
+      m.ids.push_back(row.second);
+      first = std::min(first, row.first);
+      last = std::max(last, row.first);
+    }
+    std::sort(m.ids.begin(), m.ids.end());
+    m.ids.erase(std::unique(m.ids.begin(), m.ids.end()), m.ids.end());
+    if (m.ids.empty()) m.ids = {1};
+    if (!track.rows.empty()) {
+      if (last - first >= 10000000) throw Error(Errc::parse, path + ": frame numbers span more than 10 million frames");
+      SkeletonJoints missing;
+      missing.fill(Eigen::Vector3d::Constant(kNaN));
+      m.frames.assign(static_cast<size_t>(last - first + 1), std::vector<SkeletonJoints>(m.ids.size(), missing));
+      times.assign(m.frames.size(), kNaN);
+      for (size_t r = 0; r < track.frames.size(); ++r) {
+        const size_t f = static_cast<size_t>(track.rows[r].first - first);
+        const auto at = std::lower_bound(m.ids.begin(), m.ids.end(), track.rows[r].second);
+        m.frames[f][static_cast<size_t>(at - m.ids.begin())] = joints_of(track.frames[r]);
+        times[f] = track.times_s.empty() ? static_cast<double>(f) / track.rate_hz : track.times_s[r];
+      }
+      // Frames with nobody: between the known times of their neighbours, by frame number.
+      size_t known = 0;
+      for (size_t f = 1; f < times.size(); ++f) {
+        if (std::isnan(times[f])) continue;
+        for (size_t g = known + 1; g < f; ++g)
+          times[g] = times[known] + (times[f] - times[known]) * static_cast<double>(g - known) / static_cast<double>(f - known);
+        known = f;
+      }
+    }
   }
   if (maybe_z_up) {
     // A CSV is in the calibration's world: Z up when the neck is mostly above the root along Z.
     Eigen::Vector3d up = Eigen::Vector3d::Zero();
-    for (const auto& j : m.frames)
-      if (j[kNeck].allFinite() && j[kRoot].allFinite()) up += j[kNeck] - j[kRoot];
+    for (const auto& people : m.frames)
+      for (const auto& j : people)
+        if (j[kNeck].allFinite() && j[kRoot].allFinite()) up += j[kNeck] - j[kRoot];
     if (std::abs(up.z()) > std::abs(up.y()))
-      for (auto& j : m.frames)
-        for (auto& p : j) p = zup_to_yup(p);
+      for (auto& people : m.frames)
+        for (auto& j : people)
+          for (auto& p : j) p = zup_to_yup(p);
   }
+  put_on_even_rate(m, times);
   return m;
-}
-
-MotionTrack read_octocap_csv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw Error(Errc::io, "cannot open " + path);
-  std::string line;
-  if (!std::getline(in, line)) throw Error(Errc::parse, path + ": empty");
-  MotionTrack t;
-  std::vector<std::string> header;
-  {
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) header.push_back(cell);
-  }
-  if (header.size() < 4 || header[0] != "frame" || (header.size() - 1) % 3 != 0)
-    throw Error(Errc::parse, path + ": not a `frame,NAME_x,NAME_y,NAME_z,...` CSV");
-  for (size_t i = 1; i < header.size(); i += 3) {
-    const std::string& h = header[i];
-    if (h.size() < 3 || h.compare(h.size() - 2, 2, "_x") != 0) throw Error(Errc::parse, path + ": column " + h + " is not NAME_x");
-    t.markers.push_back(h.substr(0, h.size() - 2));
-  }
-  int line_no = 1;
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (line.empty()) continue;
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) cells.push_back(cell);
-    while (cells.size() < header.size()) cells.emplace_back();
-    MarkerFrame f(t.markers.size(), Eigen::Vector3d::Constant(kNaN));
-    for (size_t m = 0; m < t.markers.size(); ++m) {
-      const std::string* c = &cells[1 + 3 * m];
-      if (c[0].empty() || c[1].empty() || c[2].empty()) continue;
-      const std::string where = path + ":" + std::to_string(line_no);
-      f[m] = {parse_coordinate(c[0], where), parse_coordinate(c[1], where), parse_coordinate(c[2], where)};
-    }
-    t.frames.push_back(std::move(f));
-  }
-  return t;
 }
 
 SkeletonMotion from_bvh(const std::string& path) {
@@ -156,7 +187,7 @@ SkeletonMotion from_bvh(const std::string& path) {
     s[kRHeel] = s[kLHeel] = Eigen::Vector3d::Constant(kNaN);
     s[kRKnuckles] = knuckles[0] >= 0 ? Eigen::Vector3d(P[knuckles[0]] * unit) : Eigen::Vector3d::Constant(kNaN);
     s[kLKnuckles] = knuckles[1] >= 0 ? Eigen::Vector3d(P[knuckles[1]] * unit) : Eigen::Vector3d::Constant(kNaN);
-    m.frames.push_back(s);
+    m.frames.push_back({s});
   }
   return m;
 }
@@ -186,7 +217,7 @@ SkeletonMotion load_skeleton_motion(const std::string& path) {
   const std::string ext = lower_extension(path);
   SkeletonMotion m;
   if (ext == "trc") m = from_track(read_trc(path), path, false);
-  else if (ext == "csv") m = from_track(read_octocap_csv(path), path, true);
+  else if (ext == "csv") m = from_track(read_csv(path), path, true);
   else if (ext == "bvh") m = from_bvh(path);
   else throw Error(Errc::invalid_argument, path + ": unknown motion format (use .trc, .csv or .bvh)");
   if (m.frames.empty()) throw Error(Errc::parse, path + ": no frames");

@@ -9,10 +9,13 @@
 
 namespace octocap {
 
+// Frames 1 / rate_hz apart: a file whose frames came unevenly (a live take's CSV says when each set happened) is
+// resampled onto that grid at its mean rate, joints interpolated (missing across a stretch of over a quarter second).
 struct SkeletonMotion {
-  std::vector<SkeletonJoints> frames;  // rig frame: Y up, metres; NaN where missing
+  std::vector<uint32_t> ids{1};                     // the people, in increasing id order (a per-person CSV: several)
+  std::vector<std::vector<SkeletonJoints>> frames;  // [frame][person]: rig frame, Y up, metres; NaN where missing
   double rate_hz = 30;
-  std::string source_kind;             // "TRC (COCO_17)", "BVH", ...
+  std::string source_kind;                          // "TRC (COCO_17)", "BVH", ...
 };
 
 // Throws Error(io / parse / invalid_argument) naming the file: unknown extension, no recognisable skeleton.

@@ -16,14 +16,14 @@ const char* const kUnityNames[kBoneCount] = {
     "LeftUpperArm", "LeftLowerArm", "RightUpperLeg", "RightLowerLeg", "LeftUpperLeg", "LeftLowerLeg",
     "RightFoot", "LeftFoot", "RightHand", "LeftHand"};
 
-// Where a bone starts in its parent's frame at rest (rig frame): the parent's tail, except for bones that
-// branch off the middle of their parent (shoulders and head at the neck = the torso's tail; legs at the hips).
+// Where a bone starts in its parent's frame at rest (rig frame): where its head joint sits against the parent's head
+// joint in the T-pose. Mostly the parent's tail; the torso starts where the root does (the root's tail is the left
+// hip), the legs at the hips on either side of it, shoulders and head at the neck (the torso's tail).
 Eigen::Vector3d rest_offset(int bone, const SkeletonPose& pose) {
   const auto& dirs = tpose_directions();
   const BoneDef& d = bone_table()[bone];
-  if (d.parent < 0) return Eigen::Vector3d::Zero();
+  if (d.parent < 0 || d.head == bone_table()[d.parent].head) return Eigen::Vector3d::Zero();
   if (bone == kBoneRUpperLeg) return -dirs[kBoneRoot] * pose[kBoneRoot].length;
-  if (bone == kBoneLUpperLeg) return dirs[kBoneRoot] * pose[kBoneRoot].length;
   return dirs[d.parent] * pose[d.parent].length;
 }
 
@@ -65,16 +65,39 @@ void add_person(lo_bundle bundle, const SkeletonPose* pose, int64_t timestamp_us
   lo_message_add_string(root, "root");
   add_transform(root, (*pose)[kBoneRoot].head, (*pose)[kBoneRoot].global);
   lo_bundle_add_message(bundle, "/VMC/Ext/Root/Pos", root);
-  for (int b = 0; b < kBoneCount; ++b) {
-    if (!(*pose)[b].valid) continue;
+  auto add_bone = [&](const char* name, const Eigen::Vector3d& offset, const Eigen::Quaterniond& local) {
     lo_message m = lo_message_new();
-    lo_message_add_string(m, kUnityNames[b]);
-    // Hips carry the root transform already: their local pose is identity.
-    if (b == kBoneRoot)
-      add_transform(m, Eigen::Vector3d::Zero(), Eigen::Quaterniond::Identity());
-    else
-      add_transform(m, rest_offset(b, *pose), (*pose)[b].local);
+    lo_message_add_string(m, name);
+    add_transform(m, offset, local);
     lo_bundle_add_message(bundle, "/VMC/Ext/Bone/Pos", m);
+  };
+  const Eigen::Quaterniond identity = Eigen::Quaterniond::Identity();
+  const SkeletonPose& p = *pose;
+  for (int b = 0; b < kBoneCount; ++b) {
+    if (!p[b].valid) continue;
+    if (b == kBoneRoot) {
+      add_bone(kUnityNames[b], Eigen::Vector3d::Zero(), identity);  // Hips: the root transform carries them
+    } else if (b == kBoneTorso) {
+      // Humanoid avatars bend the back in three: Spine, Chest, UpperChest each take a third of the torso's rotation
+      // and a third of its length (a receiver that has no UpperChest folds it into Chest), so the neck ends where
+      // octocap's torso ends.
+      const Eigen::Quaterniond third = identity.slerp(1.0 / 3, p[b].local);
+      const Eigen::Vector3d step = tpose_directions()[b] * (p[b].length / 3);
+      add_bone("Spine", rest_offset(b, p), third);
+      add_bone("Chest", step, third);
+      add_bone("UpperChest", step, third);
+    } else if (b == kBoneHead) {
+      // Neck and Head share the neck-to-head bone: half its rotation each, the Head half way along it.
+      const Eigen::Quaterniond half = identity.slerp(0.5, p[b].local);
+      add_bone("Neck", tpose_directions()[kBoneTorso] * (p[kBoneTorso].length / 3), half);
+      add_bone("Head", tpose_directions()[b] * (p[b].length / 2), half);
+    } else {
+      // Off the torso's tail: a third of the torso above UpperChest.
+      const bool on_chest = bone_table()[b].parent == kBoneTorso;
+      add_bone(kUnityNames[b], on_chest ? Eigen::Vector3d(tpose_directions()[kBoneTorso] * (p[kBoneTorso].length / 3))
+                                        : rest_offset(b, p),
+               p[b].local);
+    }
   }
 }
 
