@@ -1,4 +1,5 @@
 // The `octocap` command line, run as a user runs it, on the built-in sample recording.
+#include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
 #include <cstdio>
@@ -54,9 +55,14 @@ TEST_CASE("octocap solve on the sample: TRC, CSV and accuracy against its ground
     std::ifstream csv(dir.file("a.csv"));
     std::string header;
     std::getline(csv, header);
-    REQUIRE(header.rfind("frame,Nose_x,Nose_y,Nose_z,Neck_x,Neck_y,Neck_z,RShoulder_x", 0) == 0);
+    REQUIRE(header.rfind("frame,time,Nose_x,Nose_y,Nose_z,Neck_x,Neck_y,Neck_z,RShoulder_x", 0) == 0);
     size_t rows = 0;
-    for (std::string line; std::getline(csv, line);) ++rows;
+    for (std::string line; std::getline(csv, line);) {
+      // The sample has no picture times: frame f is at f / 30 s (the default rate), in both files.
+      CHECK(std::stod(line.substr(line.find(',') + 1)) == Catch::Approx(rows / 30.0).margin(1e-6));
+      CHECK(trc.time_of(rows) == Catch::Approx(rows / 30.0).margin(1e-6));
+      ++rows;
+    }
     REQUIRE(rows == 90);
     const octocap::BvhMotion bvh = octocap::read_bvh(dir.file("a.bvh"));
     REQUIRE(bvh.frames.size() == 90);

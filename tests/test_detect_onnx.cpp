@@ -262,11 +262,15 @@ TEST_CASE("detector bad input gives clear errors") {
   CHECK(create(model.path, OCTOCAP_DETECT_MOSAIC, other) == OCTOCAP_ERROR_INVALID_ARGUMENT);
   CHECK(last().find("multi-person") != std::string::npos);
 
-  // A model whose output does not have the shape its card promises: refused at the first run, not guessed at.
+  // A model whose output does not have the shape its card promises: refused when it is loaded (one trial run), not
+  // at the first frame of a live run and not guessed at.
   TinyModel five(5);
-  REQUIRE(create(five.path, OCTOCAP_DETECT_PER_VIEW, other) == OCTOCAP_OK);
-  CHECK(octocap_detector_run(other.get(), &ok, 1) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  CHECK(create(five.path, OCTOCAP_DETECT_PER_VIEW, other) == OCTOCAP_ERROR_PARSE);
+  CHECK(last().find("do not fit its card") != std::string::npos);
   CHECK(last().find("expected [1,17") != std::string::npos);
+  CHECK(other == nullptr);
+  TinyModel fine(17);
+  REQUIRE(create(fine.path, OCTOCAP_DETECT_PER_VIEW, other) == OCTOCAP_OK);
 
   // A destroyed handle.
   octocap_detector_t* raw = other.release();

@@ -222,9 +222,33 @@ TEST_CASE("TRC and CSV writers", "[formats][trc]") {
     std::getline(in, header);
     std::getline(in, row0);
     std::getline(in, row1);
-    REQUIRE(header == "frame,A_x,A_y,A_z,B_x,B_y,B_z");
-    REQUIRE(row0 == "0,1,2,3,4,5,6");
-    REQUIRE(row1 == "1,7,8,9,,,");
+    REQUIRE(header == "frame,time,A_x,A_y,A_z,B_x,B_y,B_z");
+    REQUIRE(row0 == "0,0,1,2,3,4,5,6");
+    REQUIRE(row1 == "1,0.0166666667,7,8,9,,,");
+  }
+  SECTION("the frames' own times go into TRC's Time column and the CSV's time column, and come back") {
+    t.times_s = {0, 0.05};  // the second frame came 50 ms after the first, not 1/60 s
+    write_trc(dir.file("t.trc"), t, false);
+    write_csv(dir.file("t.csv"), t);
+    const MotionTrack trc = read_trc(dir.file("t.trc"));
+    REQUIRE(trc.times_s.size() == 2);
+    CHECK(trc.times_s[1] == Catch::Approx(0.05));
+    const MotionTrack csv = read_csv(dir.file("t.csv"), 60);
+    REQUIRE(csv.times_s.size() == 2);
+    CHECK(csv.times_s[1] == Catch::Approx(0.05));
+    CHECK((csv.frames[0][1] - Eigen::Vector3d(4, 5, 6)).norm() < 1e-12);
+    CHECK(std::isnan(csv.frames[1][1].x()));
+  }
+  SECTION("a CSV from before the time column still reads, its times from the rate") {
+    const MotionTrack old = read_csv(dir.write("old.csv", "frame,A_x,A_y,A_z\n0,1,2,3\n1,4,5,6\n"), 25);
+    REQUIRE(old.frames.size() == 2);
+    CHECK(old.time_of(1) == Catch::Approx(0.04));
+    CHECK((old.frames[1][0] - Eigen::Vector3d(4, 5, 6)).norm() < 1e-12);
+  }
+  SECTION("a CSV whose time is not a number is refused with its line") {
+    const Error e = error_of([&] { read_csv(dir.write("bad.csv", "frame,time,A_x,A_y,A_z\n0,soon,1,2,3\n"), 25); });
+    CHECK(e.code() == Errc::parse);
+    CHECK_THAT(e.what(), ContainsSubstring("soon"));
   }
 }
 

@@ -288,8 +288,13 @@ TEST_CASE("a motion writer that is discarded writes nothing; a closed one writes
   CHECK(lines == 5);  // header + 4 frames
   CHECK(std::fopen(dropped.c_str(), "r") == nullptr);
   std::remove(kept.c_str());
-  // Rates that no camera has are refused.
-  for (double rate : {0.0, -30.0, 1e-300, 1e300, std::nan("")}) {
+  // Rates that no camera has are refused; 0 means "the frames' own timestamps".
+  octocap_motion_writer_t* timed = nullptr;
+  CHECK(octocap_motion_writer_create(dropped.c_str(), OCTOCAP_MOTION_TRC, OCTOCAP_LAYOUT_BODY_25, OCTOCAP_UP_Y, 0.0,
+                                     &timed) == OCTOCAP_OK);
+  octocap_motion_writer_discard(timed);
+  CHECK(std::fopen(dropped.c_str(), "r") == nullptr);
+  for (double rate : {-30.0, 1e-300, 1e300, std::nan("")}) {
     octocap_motion_writer_t* w = nullptr;
     CHECK(octocap_motion_writer_create(dropped.c_str(), OCTOCAP_MOTION_TRC, OCTOCAP_LAYOUT_BODY_25, OCTOCAP_UP_Y, rate,
                                        &w) == OCTOCAP_ERROR_INVALID_ARGUMENT);

@@ -1,6 +1,7 @@
 // `octocap solve --people`: several people from OpenPose JSON (synthetic, known truth) and from Pose2Sim's real
 // two-person videos (detected here), through the command line as a user runs it; what goes out of it (DDS to another
 // process, the viewer drawing everyone).
+#include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/generators/catch_generators.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
@@ -36,6 +37,7 @@ namespace {
 struct PeopleCsv {
   std::vector<std::string> names;
   std::map<uint32_t, std::map<int64_t, std::vector<Eigen::Vector3d>>> rows;
+  std::map<int64_t, double> times;  // frame -> its time column (s)
 };
 
 PeopleCsv read_people_csv(const std::string& path) {
@@ -49,20 +51,23 @@ PeopleCsv read_people_csv(const std::string& path) {
   while (std::getline(header, cell, ',')) cells.push_back(cell);
   REQUIRE(cells.size() >= 5);
   REQUIRE(cells[0] == "frame");
-  REQUIRE(cells[1] == "person");
-  for (size_t i = 2; i + 2 < cells.size(); i += 3) out.names.push_back(cells[i].substr(0, cells[i].size() - 2));
+  REQUIRE(cells[1] == "time");
+  REQUIRE(cells[2] == "person");
+  for (size_t i = 3; i + 2 < cells.size(); i += 3) out.names.push_back(cells[i].substr(0, cells[i].size() - 2));
   while (std::getline(in, line)) {
     std::vector<std::string> c;
     std::istringstream row(line);
     while (std::getline(row, cell, ',')) c.push_back(cell);
-    while (c.size() < 2 + 3 * out.names.size()) c.emplace_back();
+    while (c.size() < 3 + 3 * out.names.size()) c.emplace_back();
     std::vector<Eigen::Vector3d> kp;
     for (size_t k = 0; k < out.names.size(); ++k) {
-      const std::string& x = c[2 + 3 * k];
+      const std::string& x = c[3 + 3 * k];
       kp.push_back(x.empty() ? Eigen::Vector3d::Constant(NAN)
-                             : Eigen::Vector3d(std::stod(x), std::stod(c[3 + 3 * k]), std::stod(c[4 + 3 * k])));
+                             : Eigen::Vector3d(std::stod(x), std::stod(c[4 + 3 * k]), std::stod(c[5 + 3 * k])));
     }
-    out.rows[static_cast<uint32_t>(std::stoul(c[1]))][std::stoll(c[0])] = kp;
+    const int64_t frame = std::stoll(c[0]);
+    out.times[frame] = std::stod(c[1]);
+    out.rows[static_cast<uint32_t>(std::stoul(c[2]))][frame] = kp;
   }
   return out;
 }
@@ -93,6 +98,8 @@ TEST_CASE("octocap solve --people auto: one TRC per person, a CSV with a person 
   CHECK_FALSE(fs::exists(dir.file("take.trc")));  // several people: a file per person instead
   const PeopleCsv csv = read_people_csv(dir.file("take.csv"));
   REQUIRE(csv.rows.size() == 3);
+  // Keypoint files carry no picture times: frame f is at f / 30 s, the default rate.
+  for (const auto& [f, t] : csv.times) CHECK(t == Catch::Approx(f / 30.0).margin(1e-6));
   for (const auto& [id, frames] : csv.rows) {
     INFO("person " << id);
     // The person's own files, as long as the take.
@@ -239,6 +246,19 @@ TEST_CASE("octocap live --people auto: the real two-person videos played as came
   }
   CHECK(both >= 15);
   CHECK(csv.rows.size() == 2);
+  // The take's times are when its sets were captured (the cameras play 5 pictures a second), and its TRCs run at
+  // the rate those times measure, not at a rate a flag assumed.
+  REQUIRE(csv.times.size() >= 15);
+  double previous = -1;
+  for (const auto& [f, t] : csv.times) {
+    CHECK(t > previous);
+    previous = t;
+  }
+  const double step = (csv.times.rbegin()->second - csv.times.begin()->second) /
+                      static_cast<double>(csv.times.rbegin()->first - csv.times.begin()->first);
+  CHECK(step == Catch::Approx(0.2).margin(0.05));
+  const MotionTrack trc = read_trc(dir.file("live_person" + std::to_string(csv.rows.begin()->first) + ".trc"));
+  CHECK(trc.rate_hz == Catch::Approx(5).margin(1.25));
 }
 #endif
 
