@@ -34,6 +34,18 @@ namespace Octocap
         }
     }
 
+    /// <summary>A char[OCTOCAP_ERROR_TEXT_CAPACITY] field: an error's text, UTF-8, NUL-terminated ("" none).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public unsafe struct ErrorText
+    {
+        public const int Capacity = 256;
+        fixed byte _bytes[Capacity];
+        public override string ToString()
+        {
+            fixed (byte* b = _bytes) return NativeMethods.Utf8((IntPtr)b, Capacity);
+        }
+    }
+
     public enum LogLevel : int { Debug = 0, Info = 1, Warning = 2, Error = 3 }
     public enum Layout : int { Auto = 0, Body25 = 1, Body25B = 2, Coco17 = 3, Halpe26 = 4, BlazePose33 = 5 }
     public enum Method : int { Subdivision = 0, Triangulation = 1, Auto = 2 }
@@ -374,6 +386,10 @@ namespace Octocap
         // 1.2
         public ulong SetsRecorded;
         public ulong RecordingPicturesDropped;
+        /// <summary>1.6. 1: the engine stopped on an error it cannot go on from, said in LastError.</summary>
+        public uint Failed;
+        /// <summary>1.6. The last error: what failed the engine, a set that could not be solved, a recording's write error.</summary>
+        public ErrorText LastError;
     }
 
     public enum CameraState : int { Stopped = 0, Connecting = 1, Streaming = 2, Reconnecting = 3, Ended = 4, Failed = 5 }
@@ -395,6 +411,8 @@ namespace Octocap
         public float ClockOffsetMs;
         /// <summary>1.4. 1: capture times from the stream's own timestamps; 0: from when the host grabbed each picture.</summary>
         public uint StreamClock;
+        /// <summary>1.6. Why the camera last failed to open or broke ("" never); kept after it reconnected.</summary>
+        public ErrorText LastError;
     }
 
     [UnmanagedFunctionPointer(CallingConvention.Cdecl)]

@@ -102,6 +102,7 @@ static void layout(void) {
   FIELD(octocap_live_stats_t, detect_ms); FIELD(octocap_live_stats_t, solve_ms); FIELD(octocap_live_stats_t, publish_ms);
   FIELD(octocap_live_stats_t, latency_p50_ms); FIELD(octocap_live_stats_t, latency_p99_ms);
   FIELD(octocap_live_stats_t, sets_recorded); FIELD(octocap_live_stats_t, recording_pictures_dropped);
+  FIELD(octocap_live_stats_t, failed); FIELD(octocap_live_stats_t, last_error);
   SIZE(octocap_camera_status_t);
   FIELD(octocap_camera_status_t, struct_size); FIELD(octocap_camera_status_t, state);
   FIELD(octocap_camera_status_t, grabbed); FIELD(octocap_camera_status_t, used); FIELD(octocap_camera_status_t, dropped);
@@ -109,6 +110,7 @@ static void layout(void) {
   FIELD(octocap_camera_status_t, nominal_fps); FIELD(octocap_camera_status_t, name);
   FIELD(octocap_camera_status_t, clock_offset_ms);
   FIELD(octocap_camera_status_t, stream_clock);
+  FIELD(octocap_camera_status_t, last_error);
 }
 
 static int fail(const char* what) {
