@@ -147,7 +147,13 @@ TEST_CASE("live: four RTSP cameras on loopback solve as offline; one killed and 
                                        << median_of(all_four.reprojection) << " px, " << all_four.per_frame() << ", "
                                        << all_four.per_frame(steady) << " of the steady ones; sets with a person in "
                                        << "2/3/4 views " << all_four.views[2] << "/" << all_four.views[3] << "/"
-                                       << all_four.views[4]);
+                                       << all_four.views[4] << "; per keypoint offline/live: " << [&] {
+                                         std::string r;
+                                         for (size_t k = 0; k < Accuracy::kKeypoints; ++k)
+                                           r += std::to_string(k) + " " + std::to_string(reference.rate(k)).substr(0, 4) +
+                                                "/" + std::to_string(all_four.rate(k)).substr(0, 4) + ", ";
+                                         return r;
+                                       }());
   CHECK(steady.size() >= 12);  // the limbs at least
   CHECK(all_four.with_person >= 0.75 * all_four.frames);  // a set of one view solves nobody: under load, a few
   CHECK(all_four.all_views >= 0.6 * all_four.with_person);  // most sets whole, though decoding shares two cores

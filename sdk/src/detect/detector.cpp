@@ -201,12 +201,13 @@ std::vector<DetectedPerson> Detector::infer_region(const ImageView& view, const 
   return people;
 }
 
-std::vector<DetectedPerson> Detector::infer_crop(const ImageView& view, const Rect& box, const Person2D* person) {
+std::vector<DetectedPerson> Detector::infer_crop(const ImageView& view, const Rect& box, const Person2D* person,
+                                                 double box_confidence) {
   const double aspect = static_cast<double>(card_.input_width) / card_.input_height;
   const std::optional<double> lean =
       card_.upright && person ? body_lean(*person, layout(card_.layout), config_.min_confidence) : std::nullopt;
   if (!lean) return infer_region(view, crop_around(box, aspect));
-  const TurnedCrop crop = turned_crop_around(*person, *lean, aspect, kCropPad, config_.min_confidence);
+  const TurnedCrop crop = turned_crop_around(*person, *lean, aspect, kCropPad, box_confidence);
   if (!(crop.height > 0)) return infer_region(view, crop_around(box, aspect));
   const auto t0 = Clock::now();
   const auto [w, h] = input_size_for(aspect);
@@ -270,7 +271,7 @@ std::vector<DetectedPerson> Detector::detect_view(size_t v, const ImageView& vie
   std::vector<const Person2D*> expected;
   if (v < hints_.size())
     for (const Person2D& hint : hints_[v]) {
-      const Rect box = keypoint_box(hint, 0.01);
+      const Rect box = keypoint_box(hint, kHintConfidence);
       if ((box.width > 0 || box.height > 0) && boxes.size() < wanted) boxes.push_back(box), expected.push_back(&hint);
     }
   // Whose keypoints shape each crop (its turn with the body): the hint, else last frame's person.
@@ -300,7 +301,11 @@ std::vector<DetectedPerson> Detector::detect_view(size_t v, const ImageView& vie
     shapes.assign(1, &last_people_[v][0]);
   }
   for (size_t i = 0; i < boxes.size(); ++i) {
-    auto found = infer_crop(view, boxes[i], i < shapes.size() ? shapes[i] : nullptr);
+    // A hint's keypoints all count for the crop's extent (those its frame did not solve are remembered ones, at a
+    // low confidence); a detection's unconfident keypoints are guesses that would stretch it.
+    const bool hinted = i < expected.size() && expected[i] != nullptr;
+    auto found = infer_crop(view, boxes[i], i < shapes.size() ? shapes[i] : nullptr,
+                            hinted ? kHintConfidence : config_.min_confidence);
     if (found.empty()) continue;
     if (found.size() == 1 && !searches) {  // one person, as always
       add_unless_seen(std::move(found[0]));

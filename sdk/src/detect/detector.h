@@ -73,7 +73,10 @@ class Detector {
   // Where people are expected in each view next frame (the last 3D people reprojected): hints[view][person], the
   // person followed first; an empty list or person means no hint. The crop mode crops each (up to max_people with
   // find_new_people, else the first); PersonPick::nearest_previous uses the first.
+  // A hint keypoint at a confidence under the detector's threshold (down to kHintConfidence) still shapes the crop
+  // but is not matched against: where it was last seen, not where it is.
   void set_hints(std::vector<std::vector<Person2D>> hints) { hints_ = std::move(hints); }
+  static constexpr double kHintConfidence = 0.01;
 
   const ModelCard& card() const { return card_; }
   const DetectorConfig& config() const { return config_; }
@@ -88,7 +91,9 @@ class Detector {
   std::vector<DetectedPerson> infer_region(const ImageView& view, const Rect& region);
   // A crop around `person`'s keypoints: turned with the body when the card asks for it and the person has shoulders
   // and hips, else level (crop_around of `box`).
-  std::vector<DetectedPerson> infer_crop(const ImageView& view, const Rect& box, const Person2D* person);
+  // `box_confidence`: the least confidence of a keypoint the turned crop's extent counts.
+  std::vector<DetectedPerson> infer_crop(const ImageView& view, const Rect& box, const Person2D* person,
+                                         double box_confidence);
   std::vector<DetectedPerson> detect_view(size_t v, const ImageView& view);
   std::vector<std::vector<DetectedPerson>> detect_mosaic(const std::vector<ImageView>& views);
   std::pair<int, int> input_size_for(double aspect) const;

@@ -153,6 +153,7 @@ void Session::reset() {
   last_timestamp_us_ = 0;
   has_timestamp_ = false;
   solved_any_ = false;
+  whole_people_.clear();
   const int64_t last = frame_.info.frame_index;
   frame_.info = FrameInfo{};
   frame_.info.frame_index = last;  // numbering goes on: a stream's readers must not see a restart

@@ -151,6 +151,9 @@ class Session {
   std::vector<std::unique_ptr<FrameSink>> sinks_;  // DDS stream, VMC: fed every frame
 
   std::vector<std::vector<Person2D>> reprojected_people() const;
+  // Each solved person's every keypoint, where it was last seen, moved along with the person since (NaN: never seen).
+  void remember_whole_people();
+  std::map<uint32_t, std::vector<Eigen::Vector3d>> whole_people_;
 
   std::unique_ptr<Detector> detector_;
   std::vector<std::vector<DetectedPerson>> detections_;

@@ -2,26 +2,56 @@
 // to the next detection (crops and person picking follow the reprojected joints).
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "core/error.h"
 #include "pipeline/session.h"
 
 namespace octocap {
 
+void Session::remember_whole_people() {
+  std::map<uint32_t, std::vector<Eigen::Vector3d>> kept;
+  for (const PersonResult& person : frame_.people) {
+    std::vector<Eigen::Vector3d> whole(person.keypoints.size(), Eigen::Vector3d::Constant(NAN));
+    if (auto it = whole_people_.find(person.id); it != whole_people_.end() && it->second.size() == whole.size())
+      whole = std::move(it->second);
+    // How far the person moved since the keypoints both frames have were seen: the ones this frame lacks move as much.
+    Eigen::Vector3d shift = Eigen::Vector3d::Zero();
+    int common = 0;
+    for (size_t k = 0; k < whole.size(); ++k)
+      if (person.keypoints[k].valid && whole[k].allFinite()) shift += person.keypoints[k].position - whole[k], ++common;
+    if (common > 0) shift /= common;
+    for (size_t k = 0; k < whole.size(); ++k)
+      whole[k] = person.keypoints[k].valid ? person.keypoints[k].position : Eigen::Vector3d(whole[k] + shift);
+    kept[person.id] = std::move(whole);
+  }
+  whole_people_ = std::move(kept);  // someone no longer solved is no longer followed
+}
+
 std::vector<std::vector<Person2D>> Session::reprojected_people() const {
   std::vector<std::vector<Person2D>> hints(calib_.size());
   if (!solved_any_ || frame_.info.keypoints_solved == 0) return hints;
-  // Everyone solved (one person: the one followed), in id order: the crops follow each.
-  for (const PersonResult& person : frame_.people)
+  // Everyone solved (one person: the one followed), in id order: the crops follow each, the whole person. A frame
+  // that solved only part of someone (two views lost their upper body) must not shrink the crops to that part: they
+  // would show only legs, the network would find only legs, and the upper body stayed lost (seen in the RTSP live
+  // test when its streams decoded corrupt: views kept only the legs for seconds after the pictures were whole again).
+  // The keypoints this frame lacks are put where they were last seen, moved with the person, at a confidence that
+  // only the crop's box counts (not the person picking).
+  constexpr double kRemembered = 2 * Detector::kHintConfidence;
+  for (const PersonResult& person : frame_.people) {
+    const auto whole = whole_people_.find(person.id);
     for (size_t v = 0; v < calib_.size(); ++v) {
       Person2D p(person.keypoints.size());
       for (size_t k = 0; k < person.keypoints.size(); ++k) {
-        if (!person.keypoints[k].valid) continue;
-        const Eigen::Vector2d px = calib_[v].project(person.keypoints[k].position);
-        if (std::isfinite(px.x()) && std::isfinite(px.y())) p[k] = {px.x(), px.y(), 1.0};
+        const bool valid = person.keypoints[k].valid;
+        const bool remembered = whole != whole_people_.end() && k < whole->second.size() && whole->second[k].allFinite();
+        if (!valid && !remembered) continue;
+        const Eigen::Vector2d px = calib_[v].project(valid ? person.keypoints[k].position : whole->second[k]);
+        if (std::isfinite(px.x()) && std::isfinite(px.y())) p[k] = {px.x(), px.y(), valid ? 1.0 : kRemembered};
       }
       hints[v].push_back(std::move(p));
     }
+  }
   return hints;
 }
 
@@ -110,7 +140,9 @@ bool Session::solve_images(const std::vector<ImageView>& images, int64_t timesta
       for (Keypoint2D& k : p) k.x = (k.x + 0.5) * scale[v].x() - 0.5, k.y = (k.y + 0.5) * scale[v].y() - 0.5;
       image_people_[v].push_back(std::move(p));
     }
-  return solve(image_people_, timestamp_us);
+  const bool solved = solve(image_people_, timestamp_us);
+  remember_whole_people();
+  return solved;
 }
 
 }  // namespace octocap
