@@ -25,6 +25,7 @@
 #include "octocap/octocap.hpp"
 #include "support/child_process.h"
 #include "support/live_helpers.h"
+#include "support/mjpeg_camera.h"
 #include "support/run_command.h"
 #include "support/temp_dir.h"
 
@@ -525,4 +526,28 @@ TEST_CASE("octocap live: real videos as cameras to a TRC, with the per-stage tab
   r = testing::run_command(base + " --camera " + kVideos + "cam01.mp4");
   CHECK(r.status != 0);
   CHECK_THAT(r.output, ContainsSubstring("the calibration has 4"));
+}
+
+TEST_CASE("octocap live: cameras that deliver no picture end the take with exit 1, each named with its reason",
+          "[live][cli][network]") {
+  testing::TempDir dir;
+  // Two MJPEG cameras whose parts are not pictures, two that answer and then send nothing (the stop finds them inside
+  // a read): the take captures nothing, and --duration still ends it on time.
+  testing::Camera text = testing::serve(dir, "not-jpeg");
+  testing::Camera stall = testing::serve(dir, "stall", {"--parts", "0"});
+  const std::string command = std::string(OCTOCAP_CLI_PATH) + " live --calibration " + kDemo +
+                              "/calibration/Calib_qualisys.toml --model movenet-lightning --quiet --duration 4" +
+                              " --camera " + text.url + " --camera " + text.url + " --camera " + stall.url +
+                              " --camera " + stall.url + " --output " + dir.file("take.trc");
+  const auto t0 = std::chrono::steady_clock::now();
+  const testing::Run r = testing::run_command(command);
+  const double took_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  INFO(r.output);
+  CHECK(r.status != 0);
+  CHECK_THAT(r.output, ContainsSubstring("(number 1, " + text.url + ") delivered nothing: 30 pictures in a row could "
+                                         "not be used: a part of 1100 bytes is not a JPEG picture"));
+  CHECK_THAT(r.output, ContainsSubstring("(number 3, " + stall.url + ") delivered nothing: no picture in 3.0 s"));
+  CHECK_FALSE(std::filesystem::exists(dir.file("take.trc")));
+  // Not a speed figure: FFmpeg's reader held the stop in its open and read timeouts, 18 s past an 8 s take.
+  CHECK(took_s < 4 + 3);
 }

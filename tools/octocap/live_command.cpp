@@ -95,10 +95,13 @@ int live(const LiveOptions& o) {
               s.latency_p99_ms, s.fps);
   for (uint32_t c = 0; c < s.camera_count; ++c) {
     const octocap_camera_status_t cam = capture.camera(c);
-    std::printf("  camera %-10s %-12s %6llu frames, %6llu used, %6llu dropped, reconnects %llu, %.1f fps (says %.1f)",
+    std::printf("  camera %-10s %-12s %6llu frames, %6llu used, %6llu dropped, reconnects %llu, %.1f fps",
                 cam.name, state_name(cam.state), static_cast<unsigned long long>(cam.grabbed),
                 static_cast<unsigned long long>(cam.used), static_cast<unsigned long long>(cam.dropped),
-                static_cast<unsigned long long>(cam.reconnects), cam.fps, cam.nominal_fps);
+                static_cast<unsigned long long>(cam.reconnects), cam.fps);
+    if (cam.nominal_fps > 0) std::printf(" (says %.1f)", cam.nominal_fps);
+    if (cam.bad_pictures > 0)
+      std::printf(", %llu bad pictures skipped", static_cast<unsigned long long>(cam.bad_pictures));
     if (o.cameras[c].rfind("dds://", 0) == 0) std::printf(", %s, clock offset %.1f ms", o.cameras[c].c_str(), cam.clock_offset_ms);
     else if (cam.stream_clock) std::printf(", times from the stream's clock");
     if (cam.last_error[0]) std::printf("; last error: %s", cam.last_error);
@@ -119,8 +122,8 @@ int live(const LiveOptions& o) {
     for (uint32_t c = 0; c < s.camera_count; ++c) {
       const octocap_camera_status_t cam = capture.camera(c);
       if (cam.used == 0)
-        std::fprintf(stderr, "  camera %s (number %u) delivered nothing%s%s\n", cam.name, c + 1,
-                     cam.last_error[0] ? ": " : "", cam.last_error);
+        std::fprintf(stderr, "  camera %s (number %u, %s) delivered nothing%s%s\n", cam.name, c + 1,
+                     o.cameras[c].c_str(), cam.last_error[0] ? ": " : "", cam.last_error);
     }
     if (s.last_error[0]) std::fprintf(stderr, "  the last frame set failed with: %s\n", s.last_error);
   }

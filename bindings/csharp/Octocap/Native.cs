@@ -413,6 +413,8 @@ namespace Octocap
         public uint StreamClock;
         /// <summary>1.6. Why the camera last failed to open or broke ("" never); kept after it reconnected.</summary>
         public ErrorText LastError;
+        /// <summary>1.7. Pictures received but left out as undecodable (corrupt, not a picture); the camera goes on.</summary>
+        public ulong BadPictures;
     }
 
     [UnmanagedFunctionPointer(CallingConvention.Cdecl)]

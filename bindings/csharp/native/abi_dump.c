@@ -111,6 +111,7 @@ static void layout(void) {
   FIELD(octocap_camera_status_t, clock_offset_ms);
   FIELD(octocap_camera_status_t, stream_clock);
   FIELD(octocap_camera_status_t, last_error);
+  FIELD(octocap_camera_status_t, bad_pictures);
 }
 
 static int fail(const char* what) {

@@ -83,7 +83,7 @@ extern "C" {
 
 /** Version of this header. The library's own is octocap_version_number(). */
 #define OCTOCAP_VERSION_MAJOR 1
-#define OCTOCAP_VERSION_MINOR 6
+#define OCTOCAP_VERSION_MINOR 7
 #define OCTOCAP_VERSION_PATCH 0
 /** MAJOR * 10000 + MINOR * 100 + PATCH: 10000 for 1.0.0. */
 #define OCTOCAP_VERSION_NUMBER (OCTOCAP_VERSION_MAJOR * 10000 + OCTOCAP_VERSION_MINOR * 100 + OCTOCAP_VERSION_PATCH)
@@ -890,6 +890,10 @@ typedef struct octocap_camera_status_t {
   /* 1.6 */
   char last_error[OCTOCAP_ERROR_TEXT_CAPACITY]; /**< Why the camera last failed to open or broke ("" never): refused,
                                       not found, timed out, not a picture. Kept after it reconnected. */
+  /* 1.7 */
+  uint64_t bad_pictures;         /**< Pictures received but left out because they could not be decoded (a corrupt
+                                      JPEG, a part that is not a picture): the camera goes on, one bad picture does not
+                                      end its connection. MJPEG over HTTP cameras count them; other cameras report 0. */
 } octocap_camera_status_t;
 
 /**

@@ -37,6 +37,7 @@ void fill_camera_status(const FeedStatus& s, const std::string& name, octocap_ca
     o.clock_offset_ms = static_cast<float>(s.clock_offset_ms);
     o.stream_clock = s.stream_clock ? 1 : 0;
     copy_name(o.last_error, sizeof o.last_error, s.last_error);
+    o.bad_pictures = s.bad_pictures;
   });
 }
 

@@ -20,15 +20,24 @@ void CameraFeed::start() {
   if (thread_.joinable()) throw Error(Errc::invalid_argument, "camera '" + spec_.text + "' is already running");
   reset_status(FeedState::connecting);
   source_ = make_frame_source(spec_, options_.source);
+  source_skipped_ = 0;
   source_->open();  // throws, naming the camera
   nominal_fps_ = source_->nominal_fps();
   stop_ = false;
   thread_ = std::thread([this] { run(); });
 }
 
-void CameraFeed::stop() {
+void CameraFeed::request_stop() {
   stop_ = true;
+  if (source_) source_->interrupt();
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);  // a waiter between its check and its sleep still wakes
+  }
   wake_.notify_all();
+}
+
+void CameraFeed::stop() {
+  request_stop();
   if (thread_.joinable()) thread_.join();
   const std::lock_guard<std::mutex> lock(mutex_);
   if (status_.state != FeedState::ended && status_.state != FeedState::failed) status_.state = FeedState::stopped;
@@ -50,6 +59,7 @@ bool CameraFeed::reopen() {
       log(LogLevel::info, "camera '" + spec_.text + "': reconnected");
       return true;
     } catch (const std::exception& e) {  // octocap's, OpenCV's, the allocator's: no thread ends the process
+      if (stop_) return false;  // interrupted by the stop: not the camera's fault
       set_error(e.what());
     }
     wait_ms = std::min(2 * wait_ms, options_.reconnect_max_ms);
@@ -57,11 +67,20 @@ bool CameraFeed::reopen() {
   return false;
 }
 
+void CameraFeed::count_source_losses() {
+  const uint64_t skipped = source_->skipped(), bad = source_->bad_pictures();
+  const std::lock_guard<std::mutex> lock(mutex_);
+  status_.dropped += skipped - source_skipped_;  // never delivered, so never used: dropped as the mailbox drops
+  source_skipped_ = skipped;
+  status_.bad_pictures = bad;
+}
+
 void CameraFeed::run() {
   set_state(FeedState::streaming);
   const bool pace = options_.pace_files && !spec_.live();
   int64_t start_us = 0;
   bool started = false;
+  int64_t first_arrival_us = -1;  // sources without timestamps of their own
   StreamClock clock;  // live sources: capture times from the stream's own timestamps, once they prove steady
   while (!stop_) {
     cv::Mat& image = pictures_.next();  // never a buffer a consumer still holds: theirs stays as it was
@@ -70,8 +89,10 @@ void CameraFeed::run() {
     try {
       ok = source_->read(image, stream_us);
     } catch (const std::exception& e) {  // octocap's, OpenCV's, the allocator's: no thread ends the process
-      set_error(e.what());
+      if (!stop_) set_error(e.what());
     }
+    count_source_losses();
+    if (stop_) break;
     if (!ok) {
       if (!spec_.live()) {
         const std::lock_guard<std::mutex> lock(mutex_);
@@ -101,9 +122,16 @@ void CameraFeed::run() {
     frame.width = image.cols;
     frame.height = image.rows;
     frame.image = image;  // shared with the pool, which will not write it again while the frame is held
-    frame.grab_us = spec_.live() ? clock.capture_us(monotonic_us(), stream_us) : monotonic_us();
-    frame.stream_clock = spec_.live() && clock.trusted();
-    frame.stream_us = stream_us;
+    if (!source_->own_timestamps()) {
+      // The host's clock when the picture arrived, before its decode: the best capture time such a camera allows.
+      if (first_arrival_us < 0) first_arrival_us = stream_us;
+      frame.grab_us = stream_us;
+      frame.stream_us = stream_us - first_arrival_us;
+    } else {
+      frame.grab_us = spec_.live() ? clock.capture_us(monotonic_us(), stream_us) : monotonic_us();
+      frame.stream_clock = spec_.live() && clock.trusted();
+      frame.stream_us = stream_us;
+    }
     deliver(std::move(frame));
   }
 }

@@ -18,14 +18,17 @@ class CameraFeed : public Feed {
   ~CameraFeed() override;
 
   void start() override;
+  void request_stop() override;
   void stop() override;
 
  private:
   void run();
   bool reopen();
+  void count_source_losses();
 
   FeedOptions options_;
   std::unique_ptr<FrameSource> source_;
+  uint64_t source_skipped_ = 0;  // of source_->skipped(), already counted as dropped
   PicturePool pictures_;  // the decoder's buffers, used by the camera's thread only
   std::thread thread_;
   std::atomic<bool> stop_{false};

@@ -41,6 +41,8 @@ class Feed {
 
   // Opens the camera on the calling thread (Error(io) naming it when it cannot), then starts receiving.
   virtual void start() = 0;
+  // Asks the feed to stop without waiting (so that many feeds stop together); stop() then waits for it.
+  virtual void request_stop() {}
   virtual void stop() = 0;
   // The two newest pictures newer than `after` (a sequence number), for frame-set assembly.
   Candidate candidate(uint64_t after) const;

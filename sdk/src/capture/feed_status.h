@@ -15,6 +15,7 @@ struct FeedStatus {
   uint64_t used = 0;        // taken by the consumer
   uint64_t dropped = 0;     // replaced by a newer one before the consumer took them
   uint64_t reconnects = 0;  // times a live source was reopened after a break
+  uint64_t bad_pictures = 0;  // received but undecodable (corrupt, not a JPEG): skipped
   double fps = 0;           // pictures per second read, smoothed
   double nominal_fps = 0;   // what the source says it delivers (0: it does not say)
   // Remote cameras: how far behind their capture time (less the node's own processing) keypoints arrive, the least

@@ -7,7 +7,9 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/videoio.hpp>
 
+#include "capture/mjpeg_http_source.h"
 #include "core/error.h"
+#include "core/log.h"
 #include "io/directories.h"
 
 namespace octocap {
@@ -71,27 +73,44 @@ class PictureFolderSource : public FrameSource {
   }
 
   bool read(cv::Mat& bgr, int64_t& stream_us) override {
-    if (next_ >= files_.size()) return false;
-    bgr = cv::imread(files_[next_]);
-    if (bgr.empty()) throw Error(Errc::io, "camera '" + spec_.text + "': cannot read " + files_[next_]);
-    stream_us = static_cast<int64_t>(next_ * 1e6 / options_.picture_rate_hz);
-    ++next_;
-    return true;
+    for (; next_ < files_.size(); ++next_) {
+      bgr = cv::imread(files_[next_]);
+      if (bgr.empty()) {
+        // One bad file is one missing frame, as a camera drops one; the take goes on in time (the index is the clock).
+        ++bad_;
+        log(LogLevel::warning, "camera '" + spec_.text + "': skipped " + files_[next_] + ": not a readable picture");
+        continue;
+      }
+      stream_us = static_cast<int64_t>(next_ * 1e6 / options_.picture_rate_hz);
+      ++next_;
+      return true;
+    }
+    return false;
   }
 
   double nominal_fps() const override { return options_.picture_rate_hz; }
+  uint64_t bad_pictures() const override { return bad_; }
 
  private:
   CameraSpec spec_;
   SourceOptions options_;
   std::vector<std::string> files_;
   size_t next_ = 0;
+  uint64_t bad_ = 0;
 };
 
 }  // namespace
 
 std::unique_ptr<FrameSource> make_frame_source(const CameraSpec& spec, const SourceOptions& options) {
   if (spec.kind == SourceKind::picture_folder) return std::make_unique<PictureFolderSource>(spec, options);
+  // Plain HTTP only: HTTPS stays with FFmpeg, which (unlike libcurl's default) accepts the self-signed certificates
+  // IP cameras ship with.
+  if (spec.kind == SourceKind::network && spec.location.rfind("http://", 0) == 0)
+    return make_mjpeg_http_source(spec, options);
+  return make_ffmpeg_source(spec, options);
+}
+
+std::unique_ptr<FrameSource> make_ffmpeg_source(const CameraSpec& spec, const SourceOptions& options) {
   return std::make_unique<VideoSource>(spec, options);
 }
 

@@ -1,5 +1,6 @@
-// Reading pictures from one camera, whatever it is. OpenCV's videoio does the work: V4L2 for devices, FFmpeg for
-// network streams and files (with open and read timeouts, so a dead server is an error, never a hang).
+// Reading pictures from one camera, whatever it is. OpenCV's videoio does most of the work: V4L2 for devices, FFmpeg
+// for RTSP, HTTPS and files (with open and read timeouts, so a dead server is an error, never a hang); MJPEG over
+// plain HTTP has a reader of its own (capture/mjpeg_http_source.h).
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -21,8 +22,19 @@ class FrameSource {
   virtual bool read(cv::Mat& bgr, int64_t& stream_us) = 0;
   // Frames per second the source says it delivers (0 when it does not say).
   virtual double nominal_fps() const = 0;
+  // Whether read()'s stream_us is the stream's own clock; false: it is the host's monotonic time the picture arrived.
+  virtual bool own_timestamps() const { return true; }
+  // Pictures the source left out itself: skipped() because a newer one had arrived before read() was called (the
+  // reader fell behind), bad_pictures() because they could not be decoded. Both count from construction.
+  virtual uint64_t skipped() const { return 0; }
+  virtual uint64_t bad_pictures() const { return 0; }
+  // From another thread: a blocked open() or read() gives up soon (read() returns false). Sources that cannot be
+  // interrupted (FFmpeg's) end at their own timeouts.
+  virtual void interrupt() {}
 };
 
 std::unique_ptr<FrameSource> make_frame_source(const CameraSpec& spec, const SourceOptions& options);
+// OpenCV's videoio alone, whatever the spec (the MJPEG reader hands over to it what is not MJPEG).
+std::unique_ptr<FrameSource> make_ffmpeg_source(const CameraSpec& spec, const SourceOptions& options);
 
 }  // namespace octocap

@@ -133,6 +133,7 @@ void LiveEngine::stop() {
   stop_ = true;
   new_input_.notify_all();
   new_output_.notify_all();
+  for (auto& f : feeds_) f->request_stop();  // all at once: a stop waits for the slowest camera, not their sum
   if (thread_.joinable()) thread_.join();
   for (auto& f : feeds_) f->stop();
   running_ = false;
