@@ -250,7 +250,9 @@ TEST_CASE("an HTTP camera that is not MJPEG (a video file served over HTTP) is r
   const std::string port_file = dir.file("port");
   const std::string script =
       "import functools, http.server, os, sys\n"
-      "h = functools.partial(http.server.SimpleHTTPRequestHandler, directory=sys.argv[1])\n"
+      "class Quiet(http.server.SimpleHTTPRequestHandler):\n"
+      "    def log_message(self, *args): pass\n"
+      "h = functools.partial(Quiet, directory=sys.argv[1])\n"
       "s = http.server.ThreadingHTTPServer(('127.0.0.1', 0), h)\n"
       "open(sys.argv[2] + '.tmp', 'w').write(str(s.server_address[1])); os.replace(sys.argv[2] + '.tmp', sys.argv[2])\n"
       "s.serve_forever()\n";

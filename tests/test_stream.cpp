@@ -2,6 +2,7 @@
 // child process, the subscriber here, checked against a session solving the same recording in this process.
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -13,9 +14,13 @@
 
 #include "octocap/octocap.h"
 #include "octocap_stream.h"
+#include "core/clock.h"
 #include "stream/dds_entities.h"
+#include "stream/keypoint_publisher.h"
+#include "stream/remote_feed.h"
 #include "support/capi_helpers.h"
 #include "support/child_process.h"
+#include "support/live_helpers.h"
 #include "support/loopback_dds.h"
 
 namespace {
@@ -388,4 +393,54 @@ TEST_CASE("a publisher that comes back with another skeleton changes the receive
   CHECK(other.layout == OCTOCAP_LAYOUT_BODY_25B);
   CHECK(other.definition_counter != first.definition_counter);  // consumers re-read the definition
   CHECK(other.definition_counter != 0);
+}
+
+TEST_CASE("remote cameras: two capture nodes under one name are not merged; the one heard first is kept",
+          "[stream][nodes]") {
+  const uint32_t domain = testing::loopback_dds_domain();
+  const std::string topic = "octocap_dup_" + std::to_string(getpid());
+  auto receiver = std::make_shared<octocap::KeypointReceiver>(domain, topic);
+  octocap::FeedOptions options;
+  options.source.open_timeout_ms = 10000;
+  octocap::RemoteFeed feed(octocap::parse_camera_spec("dds://nodeA/cam01"), options, receiver, [] {});
+  octocap::KeypointPublisher first(domain, topic), second(domain, topic);
+  REQUIRE(testing::wait_until([&] { return first.matched_readers() >= 1 && second.matched_readers() >= 1; }, 10000));
+  auto view = [](uint64_t frame) {
+    octocap::RemoteView v;
+    v.node = "nodeA";
+    v.camera = "cam01";
+    v.frame_number = frame;
+    v.capture_time_us = octocap::wall_clock_us();
+    v.nominal_fps = 50;
+    v.width = 640;
+    v.height = 480;
+    return v;
+  };
+  // Two nodes at 50 Hz, half a period apart, as two processes would be: the first alone for 1 s, then both for 2 s
+  // (the second's frame numbers start at 1, as a node's do), then the second alone for 2 s, once the first is gone.
+  std::atomic<bool> both_done{false};
+  const auto t0 = std::chrono::steady_clock::now();
+  auto node = [&](octocap::KeypointPublisher& p, int first_tick, int last_tick, int phase_ms) {
+    for (int tick = first_tick; tick <= last_tick; ++tick) {
+      std::this_thread::sleep_until(t0 + std::chrono::milliseconds(20 * tick + phase_ms));
+      p.publish(view(static_cast<uint64_t>(tick - first_tick + 1)));
+    }
+  };
+  std::thread node_a([&] {
+    node(first, 0, 150, 0);
+    both_done = true;
+  });
+  std::thread node_b([&] { node(second, 50, 250, 10); });
+  feed.start();
+  REQUIRE(testing::wait_until([&] { return both_done.load(); }, 20000));
+  const octocap::FeedStatus during = feed.status();
+  node_a.join();
+  node_b.join();
+  const octocap::FeedStatus after = feed.status();
+  feed.stop();
+  INFO("during: " << during.grabbed << " grabbed, " << during.reconnects << " reconnects; after: " << after.grabbed);
+  CHECK(during.reconnects == 0);   // merged, the interleaved frame numbers looked like a restart each time
+  CHECK(during.grabbed <= 151);    // the first node published 151; merged, the camera's rate doubled
+  CHECK_THAT(during.last_error, Catch::Matchers::ContainsSubstring("two capture nodes publish as 'nodeA'"));
+  CHECK(after.grabbed > during.grabbed + 20);  // the second takes over once the first fell silent
 }

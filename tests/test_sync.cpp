@@ -167,6 +167,33 @@ TEST_CASE("octocap sync writes the offsets; octocap solve --sync solves the take
   INFO("median reprojection: unsynchronised " << before << " px, after sync " << after << " px");
   CHECK(after < 0.5 * before);
   CHECK(after < 3.0);
+
+  // Mistakes say what to fix, in the options' own words.
+  const std::string base = cli + " sync --calibration " + calib + " --keypoints " + take.dir.path().string() +
+                           " --output " + take.dir.file("bad.toml");
+  r = testing::run_command(base + " --rate 1e-9");
+  CHECK(r.status != 0);
+  CHECK_THAT(r.output, ContainsSubstring("--rate must be between"));
+  r = testing::run_command(base + " --rate nan");
+  CHECK(r.status != 0);
+  CHECK_THAT(r.output, ContainsSubstring("--rate") && !ContainsSubstring("max_offset_frames"));
+  r = testing::run_command(base + " --max-offset-s 0.01");
+  CHECK(r.status != 0);
+  CHECK_THAT(r.output, ContainsSubstring("less than one frame"));
+  CHECK_FALSE(std::filesystem::exists(take.dir.file("bad.toml")));
+  // A sync file whose offset for one camera is longer than the take: solved without that view, and said so.
+  const std::string far = take.dir.file("far.toml");
+  const double far_offsets[3] = {0, 500, 4.25};
+  REQUIRE(octocap_sync_save(far.c_str(), 30, take.calib.get(), far_offsets, 3) == OCTOCAP_OK);
+  r = testing::run_command(cli + " solve --calibration " + calib + " --keypoints " + take.dir.path().string() +
+                           " --output " + take.dir.file("far.trc") + " --sync " + far);
+  INFO(r.output);
+  CHECK(r.status == 0);
+  CHECK_THAT(r.output, ContainsSubstring("offset of 500.0 frames leaves it in 0 of the take's 120 frames"));
+  // And solve without a source says which to give.
+  r = testing::run_command(cli + " solve --calibration " + calib + " --output " + take.dir.file("none.trc"));
+  CHECK(r.status != 0);
+  CHECK_THAT(r.output, ContainsSubstring("give --keypoints or --images"));
 }
 
 TEST_CASE("sync: frames trimmed from real cameras of Pose2Sim's take are found within 0.75 frame", "[sync][real]") {

@@ -4,6 +4,14 @@
 #include <cstdio>
 #include <exception>
 
+#include "octocap/octocap.h"
+
+// The library's warnings (folders of different lengths cut, a camera left out), as the subcommands print them.
+inline void print_library_log(octocap_log_level_t level, const char* message, void*) {
+  static const char* names[] = {"debug", "info", "warning", "error"};
+  std::fprintf(stderr, "octocap %s: %s\n", level >= 0 && level <= 3 ? names[level] : "log", message);
+}
+
 template <class Options, class Command>
 int run_reporting_errors(const char* name, const Options& options, Command&& command) {
   try {

@@ -38,11 +38,6 @@ struct Accuracy {
   std::vector<double> per_keypoint_sum, per_keypoint_n;
 };
 
-void log_to_stderr(octocap_log_level_t level, const char* message, void*) {
-  static const char* names[] = {"debug", "info", "warning", "error"};
-  std::fprintf(stderr, "octocap %s: %s\n", names[level], message);
-}
-
 // Each view with what the detector found and where the solved 3D keypoints reproject.
 void write_debug_images(const octocap::Session& session, const octocap_calibration_t* calib,
                         std::vector<cv::Mat>& images, octocap_layout_t layout, uint32_t K, const octocap::Frame& frame_3d,
@@ -67,7 +62,7 @@ void write_debug_images(const octocap::Session& session, const octocap_calibrati
 }
 
 int solve(const SolveOptions& o) {
-  octocap_set_log_callback(log_to_stderr, OCTOCAP_LOG_WARNING, nullptr);
+  octocap_set_log_callback(print_library_log, OCTOCAP_LOG_WARNING, nullptr);
   if (!std::isfinite(o.rate_hz) || (o.rate_hz != 0 && (o.rate_hz < 1e-3 || o.rate_hz > 1e5)))
     throw std::runtime_error("--rate must be between 0.001 and 100000 Hz");
   const octocap::Calibration calib = octocap::Calibration::load(o.calibration);

@@ -3,7 +3,10 @@
 
 #include "command_main.h"
 
+#include <cmath>
 #include <cstdio>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "octocap/octocap.hpp"
@@ -11,12 +14,28 @@
 namespace {
 
 int sync(const SyncOptions& o) {
+  octocap_set_log_callback(print_library_log, OCTOCAP_LOG_WARNING, nullptr);
+  // What the options mean, checked here in their own words (the library would name its max_offset_frames).
+  if (!std::isfinite(o.rate_hz) || o.rate_hz < 1e-3 || o.rate_hz > 1e5)
+    throw std::runtime_error("--rate must be between 0.001 and 100000 Hz");
+  if (!std::isfinite(o.max_offset_s) || o.max_offset_s <= 0)
+    throw std::runtime_error("--max-offset-s must be a positive number of seconds");
+  const double max_offset_frames = o.max_offset_s * o.rate_hz;
+  if (max_offset_frames < 1)
+  {
+    char text[160];
+    std::snprintf(text, sizeof text, "--max-offset-s %g at --rate %g Hz is less than one frame: no offset could be "
+                  "found", o.max_offset_s, o.rate_hz);
+    throw std::runtime_error(text);
+  }
+  if (max_offset_frames > 100000)
+    throw std::runtime_error("--max-offset-s at --rate is more than 100000 frames");
   const octocap::Calibration calib = octocap::Calibration::load(o.calibration);
   octocap::Recording rec(o.keypoints);
   const uint32_t n = calib.camera_count();
   std::vector<double> offsets(n);
   std::vector<float> residual(n);
-  octocap::check(octocap_recording_estimate_sync(rec.get(), calib.get(), o.max_offset_s * o.rate_hz, offsets.data(),
+  octocap::check(octocap_recording_estimate_sync(rec.get(), calib.get(), max_offset_frames, offsets.data(),
                                                  residual.data(), n),
                  "estimating the offsets");
   octocap::check(octocap_sync_save(o.output.c_str(), o.rate_hz, calib.get(), offsets.data(), n), o.output);

@@ -137,6 +137,19 @@ void OpenPoseRecording::set_time_offsets(std::vector<double> offsets) {
                                             std::to_string(views_.size()) + " views");
   for (double o : offsets)
     if (!std::isfinite(o) || std::abs(o) > 1e6) throw Error(Errc::invalid_argument, "a time offset is not finite");
+  // An offset as long as the take leaves that view out of every frame (or most): the others are solved without it,
+  // which is rarely what was meant (a sync file of another take, or seconds written as frames).
+  const double frames = static_cast<double>(frame_count_);
+  for (size_t v = 0; v < offsets.size(); ++v) {
+    const double overlap = std::max(0.0, frames - std::abs(offsets[v]));
+    if (frames > 0 && overlap < 0.5 * frames) {
+      char text[256];
+      std::snprintf(text, sizeof text,
+                    "view %s: a time offset of %.1f frames leaves it in %.0f of the take's %.0f frames; the others "
+                    "are solved without it", view_names_[v].c_str(), offsets[v], overlap, frames);
+      log(LogLevel::warning, text);
+    }
+  }
   offsets_ = std::move(offsets);
 }
 

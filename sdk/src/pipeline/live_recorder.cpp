@@ -144,7 +144,9 @@ void LiveRecorder::write(const Job& job) {
     times_ << ",";
     if (c < s.capture_us.size() && s.capture_us[c] != 0) times_ << s.capture_us[c];
   }
-  times_ << "\n";
+  // Flushed with each set, after its files: a take killed mid-run keeps every set whose line is there (one write per
+  // set, on the recorder's own thread).
+  times_ << "\n" << std::flush;
   if (!times_) throw Error(Errc::io, "cannot write " + (fs::path(dir_) / "timestamps.csv").string());
 }
 

@@ -14,6 +14,8 @@ namespace {
 
 constexpr size_t kDelayWindow = 256;
 constexpr int kMaxSamplesPerTake = 16;
+// A new writer for a camera takes over once the one in use has been silent this long (a node killed and restarted).
+constexpr int64_t kTakeOverSilenceUs = 1000000;
 
 }  // namespace
 
@@ -72,7 +74,7 @@ void KeypointReceiver::run() {
         continue;
       }
       for (RemoteFeed* f : feeds_)
-        if (f->names(view)) f->receive(view, arrival);
+        if (f->names(view)) f->receive(view, arrival, infos[i].publication_handle);
     }
     if (n > 0) dds_return_loan(impl_->reader, samples, n);
     const int64_t now = monotonic_us();
@@ -91,6 +93,7 @@ void RemoteFeed::start() {
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     last_frame_number_ = 0;
+    writer_ = intruder_ = 0;
     delays_ms_.clear();
     delay_next_ = 0;
   }
@@ -114,11 +117,26 @@ void RemoteFeed::stop() {
   if (status_.state != FeedState::failed) status_.state = FeedState::stopped;
 }
 
-void RemoteFeed::receive(const RemoteView& view, int64_t arrival_wall_us) {
+void RemoteFeed::receive(const RemoteView& view, int64_t arrival_wall_us, uint64_t writer) {
   CapturedFrame frame;
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     if (status_.state == FeedState::stopped || status_.state == FeedState::failed) return;
+    // A writer other than the one in use: a restarted node once the old one fell silent (taken over), else a second
+    // node under the same name, whose frames interleaved with the first's would look like restarts and doubled rates.
+    if (writer_ != 0 && writer != writer_) {
+      const bool first_silent = monotonic_us() - last_arrival_us_ > kTakeOverSilenceUs;
+      if (!first_silent) {
+        if (intruder_ != writer) {
+          intruder_ = writer;
+          status_.last_error = "two capture nodes publish as '" + spec_.node + "' camera '" + spec_.camera +
+                               "': the first one heard is used, the other ignored (give each node its own --node)";
+          log(LogLevel::warning, "camera '" + spec_.text + "': " + status_.last_error);
+        }
+        return;
+      }
+    }
+    writer_ = writer;
     // The least delay seen is transit plus the clocks' difference: the estimate of the node's clock offset.
     const double delay = static_cast<double>(arrival_wall_us - view.capture_time_us) / 1000.0 - view.processing_ms;
     if (delays_ms_.size() < kDelayWindow) delays_ms_.push_back(delay);

@@ -1,7 +1,9 @@
 // Remote cameras (dds://NODE/CAMERA): the 2D keypoints a capture node detected, received over Cyclone DDS and put in
 // a feed's mailbox exactly as a local camera's pictures are, so that frame sets are assembled from both alike. A
 // camera whose node falls silent is "reconnecting" until keypoints come again (a reconnect, counted); a node that
-// restarted (its frame numbers start again) counts as one too.
+// restarted (its frame numbers start again) counts as one too. Two nodes publishing under one name (two DDS writers
+// for one dds://NODE/CAMERA) are not merged: the one heard first is kept while it speaks, the other ignored and named
+// in a warning and the camera's last error.
 #pragma once
 #include <atomic>
 #include <condition_variable>
@@ -56,7 +58,8 @@ class RemoteFeed : public Feed {
 
   // From the receiver's thread.
   bool names(const RemoteView& view) const { return view.node == spec_.node && view.camera == spec_.camera; }
-  void receive(const RemoteView& view, int64_t arrival_wall_us);
+  // `writer`: the DDS writer the sample came from (its publication handle).
+  void receive(const RemoteView& view, int64_t arrival_wall_us, uint64_t writer);
   void check_silence(int64_t now_us);
 
  private:
@@ -65,6 +68,8 @@ class RemoteFeed : public Feed {
   std::condition_variable first_;  // with Feed::mutex_
   uint64_t last_frame_number_ = 0;
   int64_t last_arrival_us_ = 0;    // monotonic
+  uint64_t writer_ = 0;            // the writer whose keypoints are used (0: none yet)
+  uint64_t intruder_ = 0;          // the last other writer heard under the same name (warned about once each)
   std::vector<double> delays_ms_;  // ring of the last ones, for the clock offset
   size_t delay_next_ = 0;
 };
