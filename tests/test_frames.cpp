@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "octocap/octocap.hpp"
+#include "support/temp_dir.h"
 
 using Catch::Matchers::ContainsSubstring;
 
@@ -259,6 +260,47 @@ TEST_CASE("motion frames are frames: joints in the rig frame, bones as the 0.x m
   CHECK(octocap_motion_get_frame(raw, 2752, &out) == OCTOCAP_ERROR_INVALID_ARGUMENT);
   CHECK(out == nullptr);
   octocap_motion_destroy(raw);
+}
+
+TEST_CASE("a motion writer's journal holds every frame as it is added, and goes once the take is written", "[frames]") {
+  Sample sample;
+  octocap::Session session(body25_config(), sample.calib);
+  testing::TempDir dir;
+  const std::string journal = dir.file("take.trc.partial.csv");
+  {
+    octocap::MotionWriter w(dir.file("take.trc"), OCTOCAP_MOTION_TRC, OCTOCAP_LAYOUT_BODY_25, OCTOCAP_UP_Y, 0);
+    w.set_journal(journal);
+    for (uint32_t f = 0; f < 4; ++f) {
+      sample.solve(session, f, 1000000 + f * 40000);  // 25 Hz
+      w.add(session.frame());
+      // Readable at once, every frame so far in it with its time: what a process killed now would leave.
+      const octocap::Motion partial(journal);
+      REQUIRE(partial.frame_count() == f + 1);
+      const octocap::Frame last = partial.frame(f);
+      CHECK(std::abs(static_cast<double>(last.summary().timestamp_us) - f * 40000.0) < 1.0);
+      CHECK(last.person_count() == 1);
+    }
+    CHECK_THROWS_AS(w.set_journal(dir.file("late.csv")), octocap::Error);  // only before the first frame
+    w.close();
+  }
+  CHECK(std::filesystem::exists(dir.file("take.trc")));
+  CHECK_FALSE(std::filesystem::exists(journal));  // written: the journal has served
+  {
+    octocap::MotionWriter dropped(dir.file("dropped.trc"), OCTOCAP_MOTION_TRC, OCTOCAP_LAYOUT_BODY_25, OCTOCAP_UP_Y, 0);
+    dropped.set_journal(dir.file("dropped.partial.csv"));
+    sample.solve(session, 0, 0);
+    dropped.add(session.frame());
+    CHECK(std::filesystem::exists(dir.file("dropped.partial.csv")));
+  }  // discarded, as on an error path
+  CHECK_FALSE(std::filesystem::exists(dir.file("dropped.partial.csv")));
+  CHECK_FALSE(std::filesystem::exists(dir.file("dropped.trc")));
+  octocap_motion_writer_t* w = nullptr;
+  REQUIRE(octocap_motion_writer_create(dir.file("x.trc").c_str(), OCTOCAP_MOTION_TRC, OCTOCAP_LAYOUT_BODY_25,
+                                       OCTOCAP_UP_Y, 0, &w) == OCTOCAP_OK);
+  CHECK(octocap_motion_writer_set_journal(w, "/proc/no-such-dir/x.csv") == OCTOCAP_ERROR_IO);
+  CHECK(octocap_motion_writer_set_journal(w, nullptr) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  CHECK(octocap_motion_writer_set_journal(nullptr, "x") == OCTOCAP_ERROR_INVALID_HANDLE);
+  octocap_motion_writer_discard(w);
 }
 
 TEST_CASE("a motion writer that is discarded writes nothing; a closed one writes what its frames held", "[frames]") {

@@ -520,6 +520,8 @@ TEST_CASE("octocap live: real videos as cameras to a TRC, with the per-stage tab
   // The TRC holds the header and at least one solved frame.
   const octocap::Motion take(dir.file("take.trc"));
   CHECK(take.frame_count() >= 1);
+  CHECK_THAT(r.output, ContainsSubstring("take.trc.partial.csv (left only if it is killed)"));
+  CHECK_FALSE(std::filesystem::exists(dir.file("take.trc.partial.csv")));  // the take ended: its journal has served
   r = testing::run_command(base + " --camera " + kVideos + "cam01.mp4 --camera /nonexistent/cam2.mp4 --camera x --camera y");
   CHECK(r.status != 0);
   CHECK_THAT(r.output, ContainsSubstring("/nonexistent/cam2.mp4"));
@@ -550,4 +552,40 @@ TEST_CASE("octocap live: cameras that deliver no picture end the take with exit 
   CHECK_FALSE(std::filesystem::exists(dir.file("take.trc")));
   // Not a speed figure: FFmpeg's reader held the stop in its open and read timeouts, 18 s past an 8 s take.
   CHECK(took_s < 4 + 3);
+}
+
+TEST_CASE("octocap live killed mid-take keeps its frames and its recording, all but the set being written",
+          "[live][cli]") {
+  testing::TempDir dir;
+  std::vector<std::string> argv = {OCTOCAP_CLI_PATH, "live", "--calibration", kDemo + "/calibration/Calib_qualisys.toml",
+                                   "--model", "movenet-lightning", "--quiet", "--output", dir.file("take.trc"),
+                                   "--record", dir.file("rec")};
+  for (const std::string& v : demo_videos()) argv.insert(argv.end(), {"--camera", v});
+  const std::string journal = dir.file("take.trc.partial.csv");
+  auto lines_of = [](const std::string& path) {
+    std::ifstream in(path);
+    size_t n = 0;
+    for (std::string line; std::getline(in, line);) ++n;
+    return n;
+  };
+  testing::ChildProcess live(argv);
+  REQUIRE(testing::wait_until([&] { return lines_of(journal) >= 11; }, 60000));  // header and 10 sets
+  live.kill_now();  // SIGKILL: no destructor, no close, no flush runs now
+  live.wait();
+  CHECK_FALSE(std::filesystem::exists(dir.file("take.trc")));
+  const size_t rows = lines_of(journal) - 1;
+  const octocap::Motion kept(journal);  // the journal is a CSV octocap reads (so does the viewer)
+  CHECK(kept.frame_count() == rows);
+  CHECK(kept.frame_count() >= 10);
+  size_t with_person = 0;
+  int64_t previous = -1;
+  for (uint32_t f = 0; f < kept.frame_count(); ++f) {
+    const octocap::Frame frame = kept.frame(f);
+    with_person += frame.person_count() == 1;
+    CHECK(frame.summary().timestamp_us > previous);  // the sets' own times
+    previous = frame.summary().timestamp_us;
+  }
+  CHECK(with_person >= 1);  // the person's keypoints, not empty rows (how many sets solved one depends on the load)
+  // The recording's set lines are on disk too (they were held in a buffer until the end).
+  CHECK(lines_of(dir.file("rec/timestamps.csv")) >= 2);
 }

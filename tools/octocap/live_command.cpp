@@ -53,8 +53,11 @@ int live(const LiveOptions& o) {
     up = octocap::Session(quiet, calib).up_axis();
   }
   // A live take's sets come when the cameras and the host allow: the CSV keeps each set's time, TRC and BVH rows are
-  // resampled to the take's mean rate, or to --rate.
-  TakeWriters writers(o.output, o.csv, o.bvh, OCTOCAP_LAYOUT_COCO_17, up, o.rate_hz, scfg.max_people != 1);
+  // resampled to the take's mean rate, or to --rate. Journaled: a take killed on the way keeps its frames.
+  TakeWriters writers(o.output, o.csv, o.bvh, OCTOCAP_LAYOUT_COCO_17, up, o.rate_hz, scfg.max_people != 1, true);
+  if (!writers.journals().empty())  // stdout, as the summary: --quiet silences only the status line
+    std::printf("octocap live: until the take ends its frames are also kept in %s (left only if it is killed)\n",
+                writers.journals().c_str());
 
   live_common::catch_interrupts();
   capture.start();

@@ -17,16 +17,31 @@ uint32_t max_people_of(const std::string& people) {
 }
 
 TakeWriters::TakeWriters(std::string trc, std::string csv, std::string bvh, octocap_layout_t layout,
-                         octocap_up_axis_t up, double rate_hz, bool several)
+                         octocap_up_axis_t up, double rate_hz, bool several, bool journaled)
     : trc_(std::move(trc)), csv_(std::move(csv)), bvh_(std::move(bvh)), layout_(layout), up_(up), rate_(rate_hz),
-      several_(several) {
+      several_(several), journaled_(journaled) {
   if (several_) {
     if (!csv_.empty()) shared_.emplace_back(csv_, OCTOCAP_MOTION_CSV_PEOPLE, layout_, up_, rate_);
+    if (!shared_.empty()) journal(shared_.front(), csv_);
     return;
   }
   if (!trc_.empty()) shared_.emplace_back(trc_, OCTOCAP_MOTION_TRC, layout_, up_, rate_);
   if (!csv_.empty()) shared_.emplace_back(csv_, OCTOCAP_MOTION_CSV, layout_, up_, rate_);
   if (!bvh_.empty()) shared_.emplace_back(bvh_, OCTOCAP_MOTION_BVH, layout_, up_, rate_);
+  // One journal holds the take's keypoints, whatever files it will be: the first file's.
+  if (!shared_.empty()) journal(shared_.front(), !trc_.empty() ? trc_ : !csv_.empty() ? csv_ : bvh_);
+}
+
+void TakeWriters::journal(octocap::MotionWriter& first_of_a_take, const std::string& path) {
+  if (!journaled_) return;
+  journals_.push_back(path + ".partial.csv");
+  first_of_a_take.set_journal(journals_.back());
+}
+
+std::string TakeWriters::journals() const {
+  std::string s;
+  for (const std::string& j : journals_) s += (s.empty() ? "" : ", ") + j;
+  return s;
 }
 
 TakeWriters::Take& TakeWriters::take_of(uint32_t id) {
@@ -35,6 +50,8 @@ TakeWriters::Take& TakeWriters::take_of(uint32_t id) {
   Take t{id, {}};
   if (!trc_.empty()) t.writers.emplace_back(person_path(trc_, id), OCTOCAP_MOTION_TRC, layout_, up_, rate_);
   if (!bvh_.empty()) t.writers.emplace_back(person_path(bvh_, id), OCTOCAP_MOTION_BVH, layout_, up_, rate_);
+  // Several people without a CSV: each person's take has a journal of its own (with a CSV, that one holds them all).
+  if (csv_.empty() && !t.writers.empty()) journal(t.writers.front(), person_path(!trc_.empty() ? trc_ : bvh_, id));
   for (int64_t time_us : times_us_)
     for (octocap::MotionWriter& w : t.writers) w.add_empty(time_us);
   takes_.push_back(std::move(t));

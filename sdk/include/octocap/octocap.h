@@ -1287,6 +1287,16 @@ OCTOCAP_API octocap_result_t octocap_motion_writer_add_empty_frame(octocap_motio
 /** (1.6) Appends an empty frame that happened at `timestamp_us` (the same clock as the frames added). */
 OCTOCAP_API octocap_result_t octocap_motion_writer_add_empty_frame_at(octocap_motion_writer_t* writer,
                                                                       int64_t timestamp_us);
+/**
+ * (1.7) Before the first frame: every frame added is also appended to `journal_path` as it comes, a CSV of the layout
+ * keypoints with their times (the format of ::OCTOCAP_MOTION_CSV, or ::OCTOCAP_MOTION_CSV_PEOPLE for such a writer),
+ * flushed each frame. A take whose process dies (killed, a power cut) keeps every frame but the one being added, in a
+ * file octocap_motion_open() and the viewer read. The journal is deleted once octocap_motion_writer_close() wrote the
+ * file, and by octocap_motion_writer_discard(): it exists only for a take that never ended. A BVH writer's journal
+ * holds keypoints, not bones. Errors: IO (it cannot be made), INVALID_ARGUMENT (frames were added already).
+ */
+OCTOCAP_API octocap_result_t octocap_motion_writer_set_journal(octocap_motion_writer_t* writer,
+                                                               const char* journal_path);
 /** Writes the file and destroys the writer (also on failure). NULL is accepted. */
 OCTOCAP_API octocap_result_t octocap_motion_writer_close(octocap_motion_writer_t* writer);
 /** Destroys the writer without writing anything (a take that failed leaves no partial file). NULL is accepted. */

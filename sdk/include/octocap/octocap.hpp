@@ -347,6 +347,9 @@ class MotionWriter {
   void add_empty(int64_t timestamp_us) {
     check(octocap_motion_writer_add_empty_frame_at(w_.get(), timestamp_us), "writing a frame");
   }
+  void set_journal(const std::string& path) {
+    check(octocap_motion_writer_set_journal(w_.get(), path.c_str()), "journal " + path);
+  }
   void close() { check(octocap_motion_writer_close(w_.release()), "writing the file"); }
 
  private:

@@ -150,6 +150,14 @@ octocap_result_t octocap_motion_writer_add_empty_frame_at(octocap_motion_writer_
   return capi::guard([&] { capi::checked(w, "motion writer")->writer->add_empty(timestamp_us); });
 }
 
+octocap_result_t octocap_motion_writer_set_journal(octocap_motion_writer_t* w, const char* journal_path) {
+  return capi::guard([&] {
+    MotionWriter& writer = *capi::checked(w, "motion writer")->writer;
+    capi::require(journal_path, "journal_path");
+    writer.journal_to(journal_path);
+  });
+}
+
 octocap_result_t octocap_motion_writer_close(octocap_motion_writer_t* w) {
   if (!w) return OCTOCAP_OK;
   const octocap_result_t r = capi::guard([&] { capi::checked(w, "motion writer")->writer->close(); });

@@ -73,25 +73,53 @@ void write_trc(const std::string& path, const MotionTrack& track, bool z_up) {
   if (!out) throw Error(Errc::io, path + ": write failed");
 }
 
+namespace {
+
+void write_csv_header(std::ostream& out, const std::vector<std::string>& markers, bool per_person) {
+  out << (per_person ? "frame,time,person" : "frame,time");
+  for (const auto& m : markers) out << "," << m << "_x," << m << "_y," << m << "_z";
+  out << "\n";
+}
+
+// person < 0: a one-person CSV's row (no person column).
+void write_csv_row(std::ostream& out, int64_t frame, double time_s, int64_t person, const MarkerFrame& points) {
+  out << frame << "," << time_s;
+  if (person >= 0) out << "," << person;
+  for (const auto& p : points) {
+    if (p.allFinite())
+      out << "," << p.x() << "," << p.y() << "," << p.z();
+    else
+      out << ",,,";
+  }
+  out << "\n";
+}
+
+}  // namespace
+
 void write_csv(const std::string& path, const MotionTrack& track) {
   std::ofstream out = open_out(path);
-  out << (track.per_person ? "frame,time,person" : "frame,time");
-  for (const auto& m : track.markers) out << "," << m << "_x," << m << "_y," << m << "_z";
-  out << "\n";
+  write_csv_header(out, track.markers, track.per_person);
   for (size_t f = 0; f < track.frames.size(); ++f) {
     if (track.per_person)
-      out << track.rows.at(f).first << "," << track.time_of(f) << "," << track.rows.at(f).second;
+      write_csv_row(out, track.rows.at(f).first, track.time_of(f), track.rows.at(f).second, track.frames[f]);
     else
-      out << f << "," << track.time_of(f);
-    for (const auto& p : track.frames[f]) {
-      if (p.allFinite())
-        out << "," << p.x() << "," << p.y() << "," << p.z();
-      else
-        out << ",,,";
-    }
-    out << "\n";
+      write_csv_row(out, static_cast<int64_t>(f), track.time_of(f), -1, track.frames[f]);
   }
   if (!out) throw Error(Errc::io, path + ": write failed");
+}
+
+CsvAppender::CsvAppender(std::string path, const std::vector<std::string>& markers, bool per_person)
+    : path_(std::move(path)), per_person_(per_person) {
+  out_ = open_out(path_);
+  write_csv_header(out_, markers, per_person);
+  out_.flush();
+  if (!out_) throw Error(Errc::io, path_ + ": write failed");
+}
+
+void CsvAppender::append(int64_t frame, double time_s, int64_t person, const MarkerFrame& points) {
+  write_csv_row(out_, frame, time_s, per_person_ ? person : -1, points);
+  out_.flush();  // on disk before the next frame: a process killed now loses only the frame being added
+  if (!out_) throw Error(Errc::io, path_ + ": write failed");
 }
 
 MotionTrack read_csv(const std::string& path, double rate_hz) {

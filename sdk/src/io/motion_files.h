@@ -1,6 +1,8 @@
 // 3D keypoint tracks on disk: TRC (OpenSim / Pose2Sim) and CSV.
 #pragma once
 #include <Eigen/Core>
+#include <cstdint>
+#include <fstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -29,6 +31,21 @@ void write_trc(const std::string& path, const MotionTrack& track, bool z_up);
 // time in seconds from the take's start; `frame,time,person,NAME_x,...` for a per-person track (one row per person
 // and frame).
 void write_csv(const std::string& path, const MotionTrack& track);
+// The same CSV written a row at a time and flushed with each, for a take whose process may die before it ends.
+class CsvAppender {
+ public:
+  // Throws Error(io) when the file cannot be made.
+  CsvAppender(std::string path, const std::vector<std::string>& markers, bool per_person);
+  // `person` is written only for a per-person CSV.
+  void append(int64_t frame, double time_s, int64_t person, const MarkerFrame& points);
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  bool per_person_;
+  std::ofstream out_;
+};
+
 // Reads what write_csv writes, and the CSVs of before 1.6 (no time column: frames at rate_hz, 30 unless given).
 // A per-person CSV comes back per_person with its rows. Throws Error(io / parse) naming the file and line.
 MotionTrack read_csv(const std::string& path, double rate_hz = 30);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 
 #include "core/error.h"
@@ -46,6 +47,28 @@ MotionWriter::MotionWriter(std::string path, MotionFormat format, LayoutId layou
   track_.per_person = format == MotionFormat::csv_people;
 }
 
+MotionWriter::~MotionWriter() {
+  if (!journal_) return;
+  std::error_code ec;
+  std::filesystem::remove(journal_->path(), ec);  // written or dropped: the journal has served
+}
+
+void MotionWriter::journal_to(const std::string& path) {
+  if (!track_.frames.empty()) throw Error(Errc::invalid_argument, "a journal starts before the first frame");
+  journal_ = std::make_unique<CsvAppender>(path, track_.markers, track_.per_person);
+}
+
+void MotionWriter::journal_last(int64_t person_id) {
+  if (!journal_) return;
+  const size_t row = track_.frames.size() - 1;
+  const int64_t first = stamps_us_.front(), stamp = stamps_us_.back();
+  // Seconds from the first frame, as the CSV will say; frames without a time at the nominal rate.
+  const double t = stamp != kNoTime && first != kNoTime ? static_cast<double>(stamp - first) * 1e-6
+                                                        : static_cast<double>(row) / track_.rate_hz;
+  const int64_t frame = track_.per_person ? track_.rows.back().first : static_cast<int64_t>(row);
+  journal_->append(frame, t, person_id, track_.frames.back());
+}
+
 std::vector<double> MotionWriter::times() const {
   std::vector<double> t;
   if (stamps_us_.empty() || std::find(stamps_us_.begin(), stamps_us_.end(), kNoTime) != stamps_us_.end()) return t;
@@ -83,6 +106,7 @@ void MotionWriter::add_person(const PersonResult& person, int64_t frame_index, i
   f.resize(track_.markers.size(), kMissing);
   track_.frames.push_back(std::move(f));
   poses_.push_back(person.bones);
+  journal_last(person.id);
 }
 
 void MotionWriter::add_keypoints(const std::vector<Eigen::Vector3d>& keypoints) {
@@ -97,6 +121,7 @@ void MotionWriter::add_keypoints(const std::vector<Eigen::Vector3d>& keypoints) 
   for (const Eigen::Vector3d& p : keypoints) f.push_back(p.allFinite() ? p : kMissing);
   track_.frames.push_back(std::move(f));
   stamps_us_.push_back(kNoTime);
+  journal_last(-1);
 }
 
 void MotionWriter::add_empty() { add_empty(kNoTime); }
@@ -106,6 +131,7 @@ void MotionWriter::add_empty(int64_t timestamp_us) {
   track_.frames.emplace_back(track_.markers.size(), kMissing);
   poses_.emplace_back();  // all bones invalid: the BVH keeps the previous pose
   stamps_us_.push_back(timestamp_us);
+  journal_last(-1);
 }
 
 void MotionWriter::close() const {
@@ -135,6 +161,10 @@ void MotionWriter::close() const {
     write_bvh(path_, poses, track.rate_hz);
   else
     write_csv(path_, track);
+  if (journal_) {
+    std::error_code ec;
+    std::filesystem::remove(journal_->path(), ec);
+  }
 }
 
 }  // namespace octocap

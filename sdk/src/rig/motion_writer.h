@@ -1,9 +1,12 @@
 // A take written to disk frame by frame: TRC / CSV of the layout keypoints, or BVH of the bone animation.
-// Nothing is written until close() (TRC's header needs the frame count); a failed take is simply dropped.
+// Nothing is written until close() (TRC's header needs the frame count); a failed take is simply dropped. A journal
+// (journal_to) keeps a take whose process dies: every frame appended to a CSV as it is added, removed once the file
+// is written or the take dropped.
 // Time: every frame keeps its timestamp. The CSV says when each frame happened; TRC and BVH rows are 1 / rate apart,
 // so a take whose frames are not (a live take's sets) is resampled to the rate: the one given, or with rate 0 the
 // take's mean rate. Frames without increasing timestamps are taken to be 1 / rate apart.
 #pragma once
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -20,6 +23,13 @@ class MotionWriter {
   // Throws Error(invalid_argument) for a rate that is not 0 (the frames' timestamps say) or a positive, finite, sane
   // frame rate.
   MotionWriter(std::string path, MotionFormat format, LayoutId layout, bool z_up, double rate_hz);
+  ~MotionWriter();
+  MotionWriter(MotionWriter&&) = default;
+  MotionWriter& operator=(MotionWriter&&) = default;
+  // Before the first frame: each frame is also appended to `path`, a CSV of the layout keypoints with their times
+  // (io/motion_files.h, flushed per frame), deleted by close() once the file is written, and by the destructor.
+  // Throws Error(io) when it cannot be made, Error(invalid_argument) after the first frame.
+  void journal_to(const std::string& path);
   // The person's keypoints (and bones); a frame without that person is an empty frame (csv_people: no row).
   // Throws when the frame's layout is not the writer's.
   void add(const FrameResult& frame, size_t person);
@@ -37,6 +47,7 @@ class MotionWriter {
 
  private:
   void add_person(const PersonResult& person, int64_t frame_index, int64_t timestamp_us);
+  void journal_last(int64_t person_id);
   // Seconds from the first frame, when every frame has a timestamp and they increase; else empty.
   std::vector<double> times() const;
 
@@ -48,6 +59,7 @@ class MotionWriter {
   MotionTrack track_;
   std::vector<SkeletonPose> poses_;  // BVH
   std::vector<int64_t> stamps_us_;   // per frame (row); kNoTime where none was given
+  std::unique_ptr<CsvAppender> journal_;
 };
 
 }  // namespace octocap
