@@ -2,6 +2,8 @@
 #include <catch2/catch_approx.hpp>
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
+
+#include <sys/wait.h>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -86,6 +88,17 @@ TEST_CASE("octocap solve refuses bad input with a clear message", "[cli]") {
           " --layout BODY_25 --output " + dir.file("a.trc"));
   REQUIRE(r.status != 0);
   REQUIRE_THAT(r.output, ContainsSubstring("4 camera folders") && ContainsSubstring("5 cameras"));
+  // A mistyped option is named with the nearest real one, not hidden behind "--output is required".
+  r = run("solve --calibration " + kSample + "/calibration.toml --keypoints " + kSample + "/keypoints --outptu " +
+          dir.file("a.trc"));
+  CHECK(WEXITSTATUS(r.status) == 2);
+  CHECK_THAT(r.output, ContainsSubstring("unknown option --outptu; did you mean --output?"));
+  r = run("live --calibration x.toml --camera 0 --duratoin=5");
+  CHECK(WEXITSTATUS(r.status) == 2);
+  CHECK_THAT(r.output, ContainsSubstring("unknown option --duratoin; did you mean --duration?"));
+  r = run("sync --calibration x.toml --zzzqqqxx 3");
+  CHECK(WEXITSTATUS(r.status) == 2);
+  CHECK_THAT(r.output, ContainsSubstring("unknown option --zzzqqqxx (octocap sync --help lists them)"));
 }
 
 TEST_CASE("octocap --help and layouts", "[cli]") {

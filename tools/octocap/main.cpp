@@ -4,6 +4,7 @@
 
 #include "octocap/octocap.h"
 #include "detect_command.h"
+#include "option_typos.h"
 #include "live_command.h"
 #include "sync_command.h"
 #include "solve_command.h"
@@ -125,6 +126,7 @@ int main(int argc, char** argv) {
 
   CLI::App* lc = app.add_subcommand("layouts", "List the keypoint layouts and their keypoints");
 
+  if (const int status = report_unknown_options(app, argc, argv)) return status;
   CLI11_PARSE(app, argc, argv);
   if (sc->parsed() && solve.keypoints.empty() && solve.images.empty()) {
     std::fprintf(stderr, "octocap solve: give --keypoints or --images\n");

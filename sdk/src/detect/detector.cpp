@@ -416,27 +416,27 @@ std::vector<std::vector<DetectedPerson>> Detector::detect(const std::vector<Imag
     std::vector<size_t> order(views.size());
     for (size_t v = 0; v < order.size(); ++v) order[v] = v;
     std::stable_partition(order.begin(), order.end(), [&](size_t v) { return detect_now[v] != 0; });
-    std::atomic<size_t> next{0};
     std::exception_ptr failure;
     std::mutex failure_mutex;
-    auto worker = [&] {
-      for (size_t i = next++; i < order.size(); i = next++) {
-        const size_t v = order[i];
-        try {
-          // A view without a picture this set (a live camera that lagged) keeps its last picture and people: the
-          // next picture is followed from them across the gap (the way-back check drops what moved too far).
-          if (!absent(views[v])) result[v] = detect_or_track(v, views[v], scheduled, detect_now[v] != 0);
-        } catch (...) {
-          const std::lock_guard<std::mutex> lock(failure_mutex);
-          if (!failure) failure = std::current_exception();
-        }
+    const std::function<void(size_t)> one = [&](size_t i) {
+      const size_t v = order[i];
+      try {
+        // A view without a picture this set (a live camera that lagged) keeps its last picture and people: the
+        // next picture is followed from them across the gap (the way-back check drops what moved too far).
+        if (!absent(views[v])) result[v] = detect_or_track(v, views[v], scheduled, detect_now[v] != 0);
+      } catch (...) {
+        const std::lock_guard<std::mutex> lock(failure_mutex);
+        if (!failure) failure = std::current_exception();
       }
     };
-    const size_t threads = std::min<size_t>(static_cast<size_t>(parallel_), views.size());
-    std::vector<std::thread> pool;
-    for (size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
-    worker();
-    for (auto& t : pool) t.join();
+    // Made at the first frame of several views: a capture node's one-camera detectors never start its threads.
+    if (!views_pool_ && parallel_ > 1 && order.size() > 1)
+      views_pool_ = std::make_unique<WorkerPool>(static_cast<unsigned>(std::min<size_t>(parallel_, order.size())));
+    if (views_pool_ && order.size() > 1) {
+      views_pool_->parallel_for(order.size(), one);  // in `order`: the views that run the network first
+    } else {
+      for (size_t i = 0; i < order.size(); ++i) one(i);
+    }
     if (failure) std::rethrow_exception(failure);
   }
   // A single-person model always answers with someone; fewer than three confident keypoints is nobody.

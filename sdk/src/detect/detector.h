@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/parallel.h"
 #include "detect/decoders.h"
 #include "detect/flow_tracker.h"
 #include "detect/image.h"
@@ -107,6 +108,9 @@ class Detector {
   ModelCard card_;
   std::unique_ptr<OrtModel> model_;
   int parallel_ = 1;
+  // The threads that detect views at once, made once: threads made per frame cost their start, and every new
+  // thread OpenCV runs on keeps thread-local buffers it never frees (a live take grew 1.6 MB a minute).
+  std::unique_ptr<WorkerPool> views_pool_;
   std::mutex timing_mutex_;
   const Person2D& first_hint(size_t v) const;
   std::vector<std::vector<Person2D>> hints_;

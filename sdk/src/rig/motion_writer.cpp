@@ -105,7 +105,7 @@ void MotionWriter::add_person(const PersonResult& person, int64_t frame_index, i
   for (const PointResult& k : person.keypoints) f.push_back(k.valid ? k.position : kMissing);
   f.resize(track_.markers.size(), kMissing);
   track_.frames.push_back(std::move(f));
-  poses_.push_back(person.bones);
+  if (format_ == MotionFormat::bvh) poses_.push_back(person.bones);  // 1.7 KB a frame: only a BVH needs them
   journal_last(person.id);
 }
 
@@ -129,7 +129,7 @@ void MotionWriter::add_empty() { add_empty(kNoTime); }
 void MotionWriter::add_empty(int64_t timestamp_us) {
   if (track_.per_person) return;  // a frame without the person is no row
   track_.frames.emplace_back(track_.markers.size(), kMissing);
-  poses_.emplace_back();  // all bones invalid: the BVH keeps the previous pose
+  if (format_ == MotionFormat::bvh) poses_.emplace_back();  // all bones invalid: the BVH keeps the previous pose
   stamps_us_.push_back(timestamp_us);
   journal_last(-1);
 }

@@ -57,7 +57,7 @@ class MotionWriter {
   bool z_up_;
   double rate_hz_;  // 0: the frames' mean
   MotionTrack track_;
-  std::vector<SkeletonPose> poses_;  // BVH
+  std::vector<SkeletonPose> poses_;  // BVH only (per frame, as track_.frames)
   std::vector<int64_t> stamps_us_;   // per frame (row); kNoTime where none was given
   std::unique_ptr<CsvAppender> journal_;
 };
