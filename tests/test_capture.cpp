@@ -257,9 +257,7 @@ TEST_CASE("an HTTP camera that is not MJPEG (a video file served over HTTP) is r
       "open(sys.argv[2] + '.tmp', 'w').write(str(s.server_address[1])); os.replace(sys.argv[2] + '.tmp', sys.argv[2])\n"
       "s.serve_forever()\n";
   testing::ChildProcess server({"/usr/bin/python3", "-c", script, dir.path().string(), port_file});
-  REQUIRE(testing::wait_until([&] { return std::filesystem::exists(port_file); }, 20000));
-  int port = 0;
-  std::ifstream(port_file) >> port;
+  const int port = testing::port_written_to(port_file);
   auto feed = feed_for("http://127.0.0.1:" + std::to_string(port) + "/take.avi");
   feed->start();
   CHECK(testing::wait_until([&] { return feed->status().grabbed >= 10; }, 20000));

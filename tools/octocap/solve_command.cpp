@@ -63,8 +63,7 @@ void write_debug_images(const octocap::Session& session, const octocap_calibrati
 
 int solve(const SolveOptions& o) {
   octocap_set_log_callback(print_library_log, OCTOCAP_LOG_WARNING, nullptr);
-  if (!std::isfinite(o.rate_hz) || (o.rate_hz != 0 && (o.rate_hz < 1e-3 || o.rate_hz > 1e5)))
-    throw std::runtime_error("--rate must be between 0.001 and 100000 Hz");
+  check_rate_option(o.rate_hz, true);
   const octocap::Calibration calib = octocap::Calibration::load(o.calibration);
   const uint32_t cameras = calib.camera_count();
 

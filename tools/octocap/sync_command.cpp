@@ -16,8 +16,7 @@ namespace {
 int sync(const SyncOptions& o) {
   octocap_set_log_callback(print_library_log, OCTOCAP_LOG_WARNING, nullptr);
   // What the options mean, checked here in their own words (the library would name its max_offset_frames).
-  if (!std::isfinite(o.rate_hz) || o.rate_hz < 1e-3 || o.rate_hz > 1e5)
-    throw std::runtime_error("--rate must be between 0.001 and 100000 Hz");
+  check_rate_option(o.rate_hz, false);
   if (!std::isfinite(o.max_offset_s) || o.max_offset_s <= 0)
     throw std::runtime_error("--max-offset-s must be a positive number of seconds");
   const double max_offset_frames = o.max_offset_s * o.rate_hz;

@@ -68,7 +68,7 @@ class MjpegHttpSource : public FrameSource {
       close_transfer();
       throw Error(Errc::io, "camera '" + spec_.text + "': cannot be opened: " + e.what());
     }
-    if (!multipart_) {
+    if (!reader_) {
       // Not an MJPEG stream: FFmpeg knows the other things a server may send.
       close_transfer();
       fallback_ = make_ffmpeg_source(spec_, options_);
@@ -91,7 +91,6 @@ class MjpegHttpSource : public FrameSource {
         throw;
       }
       stream_us = monotonic_us();  // arrival: an MJPEG part carries no time of its own
-      skipped_ = skipped_base_ + reader_->skipped();
       if (decoder_.decode(part_, bgr)) {
         bad_in_a_row_ = 0;
         return true;
@@ -109,7 +108,8 @@ class MjpegHttpSource : public FrameSource {
 
   double nominal_fps() const override { return fallback_ ? fallback_->nominal_fps() : 0; }
   bool own_timestamps() const override { return fallback_ ? fallback_->own_timestamps() : false; }
-  uint64_t skipped() const override { return skipped_; }
+  // Called on the camera's thread, as read(): the reader is not shared.
+  uint64_t skipped() const override { return skipped_before_ + (reader_ ? reader_->skipped() : 0); }
   uint64_t bad_pictures() const override { return bad_; }
 
   void interrupt() override {
@@ -122,7 +122,7 @@ class MjpegHttpSource : public FrameSource {
     easy_ = curl_easy_init();
     if (easy_ == nullptr) throw Error(Errc::out_of_memory, "camera '" + spec_.text + "': cannot start a transfer");
     errbuf_[0] = '\0';
-    decided_ = multipart_ = transfer_done_ = false;
+    decided_ = transfer_done_ = false;
     sniffed_.clear();
     content_type_.clear();
     callback_error_.clear();
@@ -146,7 +146,7 @@ class MjpegHttpSource : public FrameSource {
 
   void close_transfer() {
     if (easy_ == nullptr) return;
-    if (reader_) skipped_base_ += reader_->skipped();
+    if (reader_) skipped_before_ += reader_->skipped();
     reader_.reset();
     curl_multi_remove_handle(multi_, easy_);
     curl_easy_cleanup(easy_);
@@ -216,7 +216,7 @@ class MjpegHttpSource : public FrameSource {
       bytes = self->sniffed_.data();
       n = self->sniffed_.size();
     }
-    if (!self->multipart_) return size * count;  // open() hands the camera to FFmpeg
+    if (!self->reader_) return size * count;  // not multipart: open() hands the camera to FFmpeg
     try {  // nothing may be thrown through libcurl's C frames
       self->reader_->feed(bytes, n);
     } catch (const std::exception& e) {
@@ -231,13 +231,13 @@ class MjpegHttpSource : public FrameSource {
   CURLM* multi_ = nullptr;
   CURL* easy_ = nullptr;
   char errbuf_[CURL_ERROR_SIZE] = {};
+  // A multipart body has a reader from now on; anything else none (open() then hands it to FFmpeg).
   void decide(bool multipart, const std::string& boundary) {
     decided_ = true;
-    multipart_ = multipart;
     if (multipart) reader_.emplace(boundary);
   }
 
-  bool decided_ = false, multipart_ = false, transfer_done_ = false;
+  bool decided_ = false, transfer_done_ = false;
   std::string sniffed_;  // the body's first bytes, while they decide what it is
   int status_ = 0;
   CURLcode result_ = CURLE_OK;
@@ -247,7 +247,7 @@ class MjpegHttpSource : public FrameSource {
   JpegDecoder decoder_;
   std::unique_ptr<FrameSource> fallback_;
   std::atomic<bool> interrupted_{false};
-  uint64_t bad_ = 0, skipped_ = 0, skipped_base_ = 0;
+  uint64_t bad_ = 0, skipped_before_ = 0;  // skipped_before_: by the readers of earlier connections
   int bad_in_a_row_ = 0;
 };
 
