@@ -8,7 +8,7 @@ ensure_deps
 # on downloads. Their output comes after the build's.
 fetch_log="$(mktemp)"
 ( bash "$ROOT/scripts/fetch-real-data.sh" && bash "$ROOT/scripts/fetch-real-videos.sh" &&
-  bash "$ROOT/scripts/fetch-models.sh" ) >"$fetch_log" 2>&1 &
+  bash "$ROOT/scripts/fetch-models.sh" && bash "$ROOT/scripts/fetch-gltf-validator.sh" ) >"$fetch_log" 2>&1 &
 fetch=$!
 build_status=0
 configure_and_build "$BUILD_DIR" "$@" || build_status=$?

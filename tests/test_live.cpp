@@ -550,8 +550,9 @@ TEST_CASE("octocap live: cameras that deliver no picture end the take with exit 
                                          "not be used: a part of 1100 bytes is not a JPEG picture"));
   CHECK_THAT(r.output, ContainsSubstring("(number 3, " + stall.url + ") delivered nothing: no picture in 3.0 s"));
   CHECK_FALSE(std::filesystem::exists(dir.file("take.trc")));
-  // Not a speed figure: FFmpeg's reader held the stop in its open and read timeouts, 18 s past an 8 s take.
-  CHECK(took_s < 4 + 3);
+  // Not a speed figure: FFmpeg's reader once held the stop in its open and read timeouts, 18 s past the take. The
+  // bound leaves a loaded 2-core machine 10 s for starting, loading the model and closing (CI once took 7.5 s).
+  CHECK(took_s < 4 + 10);
 }
 
 TEST_CASE("octocap live killed mid-take keeps its frames and its recording, all but the set being written",

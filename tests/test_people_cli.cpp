@@ -142,6 +142,8 @@ TEST_CASE("octocap solve --people auto on Pose2Sim's real two-person videos: two
   INFO(r.output);
   CHECK_THAT(r.output, ContainsSubstring(detection.empty() ? "model movenet-multipose, mode per-view" : "mode crop"));
   REQUIRE(r.status == 0);
+  // Views in the calibration's order, two people and a bystander in them: no word of a swap.
+  CHECK_THAT(r.output, !ContainsSubstring("look swapped") && !ContainsSubstring("the calibration's order"));
   const PeopleCsv csv = read_people_csv(dir.file("take.csv"));
   // Two people move close together, one often hiding the other, a bystander stands in the background: exactly two
   // tracked people for the whole take.

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "core/log.h"
 #include "io/motion_files.h"
 #ifdef OCTOCAP_HAVE_DDS
 #include "stream/dds_publisher.h"
@@ -15,6 +16,7 @@
 #include "solve/person_select.h"
 #include "solve/subdivision.h"
 #include "solve/triangulation.h"
+#include "solve/view_order.h"
 #include "solve/volume.h"
 
 namespace octocap {
@@ -99,6 +101,7 @@ Session::Session(const SessionConfig& config, Calibration calib)
                                                 : Method::triangulation;
   z_up_ = config_.up == UpAxis::automatic ? guess_z_up(calib_) : config_.up == UpAxis::z;
   pool_ = std::make_unique<WorkerPool>(config_.threads);
+  view_order_ = std::make_unique<ViewOrderCheck>(calib_, config_.min_confidence, config_.outlier_threshold_px);
   const size_t K = layout_->keypoints.size();
   single_ = new_person_state();
   if (config_.max_people != 1) tracks_ = std::make_unique<PersonTracks>(*layout_);
@@ -216,6 +219,8 @@ bool Session::solve(const std::vector<std::vector<Person2D>>& people, int64_t ti
       usable[v].push_back(std::move(person));
       original[v].push_back(static_cast<int>(p));
     }
+  // Once per session, over its first frames with people: said as a warning, the solve goes on as told.
+  if (view_order_->add(usable) && !view_order_->verdict().empty()) log(LogLevel::warning, view_order_->verdict());
   // In double: the difference of two extreme int64 timestamps overflows int64.
   const double dt = has_timestamp_
                         ? (static_cast<double>(timestamp_us) - static_cast<double>(last_timestamp_us_)) * 1e-6

@@ -22,6 +22,8 @@
 
 namespace octocap {
 
+class ViewOrderCheck;
+
 // More 2D people than this in one view is no capture (a crowd, a detector gone wrong): refused.
 constexpr uint32_t kMaxPeoplePerView = 64;
 // The most people one frame holds (max_people = 0, "all of them").
@@ -148,6 +150,7 @@ class Session {
   bool z_up_ = false;
   Method method_ = Method::subdivision;
   std::unique_ptr<WorkerPool> pool_;
+  std::unique_ptr<ViewOrderCheck> view_order_;  // are the views in the calibration's order?
   std::vector<std::unique_ptr<FrameSink>> sinks_;  // DDS stream, VMC: fed every frame
 
   std::vector<std::vector<Person2D>> reprojected_people() const;

@@ -8,7 +8,7 @@
 namespace octocap {
 namespace {
 
-constexpr size_t kMaxPeople = 64, kMaxKeypoints = 160, kNameBytes = 31;
+constexpr size_t kViewPeopleBound = 64, kPersonKeypointsBound = 160, kNameBytes = 31;
 
 void copy_name(const std::string& from, char* to, const char* what) {
   if (from.empty() || from.size() > kNameBytes)
@@ -19,7 +19,7 @@ void copy_name(const std::string& from, char* to, const char* what) {
 }  // namespace
 
 void fill_view_keypoints(const RemoteView& v, ViewKeypointsBuffers& out) {
-  if (v.people.size() > kMaxPeople) throw Error(Errc::invalid_argument, "more than 64 people in one view");
+  if (v.people.size() > kViewPeopleBound) throw Error(Errc::invalid_argument, "more than 64 people in one view");
   octocap_wire_ViewKeypoints& s = out.sample;
   copy_name(v.node, s.node, "node name");
   copy_name(v.camera, s.camera, "camera name");
@@ -36,7 +36,7 @@ void fill_view_keypoints(const RemoteView& v, ViewKeypointsBuffers& out) {
   out.people.resize(v.people.size());
   for (size_t p = 0; p < v.people.size(); ++p) {
     const Person2D& person = v.people[p];
-    if (person.size() > kMaxKeypoints) throw Error(Errc::invalid_argument, "more than 160 keypoints per person");
+    if (person.size() > kPersonKeypointsBound) throw Error(Errc::invalid_argument, "more than 160 keypoints per person");
     out.keypoints[p].resize(person.size());
     for (size_t k = 0; k < person.size(); ++k)
       out.keypoints[p][k] = {static_cast<float>(person[k].x), static_cast<float>(person[k].y),
