@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "glb_tidy.h"
 #include "scene.h"
 
 namespace {
@@ -94,4 +95,5 @@ void export_gltf(Scene& scene, const std::string& model_path, const std::string&
   Assimp::Exporter exporter;
   if (exporter.Export(copy.get(), "glb2", out_path) != aiReturn_SUCCESS)
     throw std::runtime_error("cannot export " + out_path + ": " + exporter.GetErrorString());
+  tidy_glb(out_path);
 }
