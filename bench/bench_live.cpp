@@ -8,6 +8,9 @@
 // `--soak SECONDS`: instead, four RTSP sub-streams for that long, a line every 30 s (rate, latency, whole sets, the
 // process's resident memory): latency and memory stay flat when every hand-over is bounded.
 // `--rtsp`: only the RTSP rows.
+// `--webcams [--busy]`: four webcam-class MJPEG cameras (544x960 and 720x1280 at 30 frames/s, ffmpeg servers on
+// loopback), the defaults (the rate governor) against --quality max: sets/s, latency, keypoint cells solved, the rung
+// the governor ended on; `--busy` keeps one core busy with another process meanwhile.
 #include <unistd.h>
 
 #include <cstring>
@@ -16,6 +19,7 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -63,6 +67,72 @@ void row(const char* what, const octocap::Calibration& calib, const std::vector<
               st.frame_sets ? 100.0 * static_cast<double>(st.sets_incomplete) / static_cast<double>(st.frame_sets) : 0.0,
               st.capture_ms, st.detect_ms, st.solve_ms, st.latency_p50_ms, st.latency_p99_ms,
               grabbed ? 100.0 * static_cast<double>(dropped) / static_cast<double>(grabbed) : 0.0);
+}
+
+// One governed (or not) live run of `seconds`: rate, latency, keypoint cells solved of the frames taken, the rung.
+void governed_row(const char* what, const octocap::Calibration& calib, const std::vector<std::string>& cameras,
+                  octocap_live_quality_t quality, double seconds) {
+  octocap_live_config_t cfg;
+  octocap_live_config_init(&cfg);
+  cfg.quality = quality;
+  octocap_session_config_t s;
+  octocap_session_config_init(&s);
+  s.layout = OCTOCAP_LAYOUT_COCO_17;
+  octocap::Live live(cfg, s, calib, cameras);
+  octocap_detector_config_t d;
+  octocap_detector_config_init(&d);
+  live.set_detector(d);
+  live.start();
+  // The first two seconds: cameras connecting, the governor finding its rung; not what a take is like.
+  const auto start = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  while (elapsed() < 2) live.take(100);
+  const octocap_live_stats_t before = live.stats();
+  uint64_t taken = 0, cells = 0;
+  while (elapsed() < 2 + seconds) {
+    std::optional<octocap::Frame> f = live.take(500);
+    if (!f) continue;
+    ++taken;
+    if (f->summary().person_count == 0) continue;
+    for (const octocap_joint_t& k : f->keypoints3d(0)) cells += k.valid ? 1 : 0;
+  }
+  const octocap_live_stats_t st = live.stats();
+  live.stop();
+  char rung[48] = "";
+  if (st.quality_rungs > 0) std::snprintf(rung, sizeof rung, " (rung %u of %u)", st.quality_rung + 1, st.quality_rungs);
+  std::printf("| %-30s | %-8s | %5.1f | %5.0f / %5.0f | %5.1f %% | %s on %u view%s%s | %u | %5.1f |\n", what,
+              quality == OCTOCAP_QUALITY_MAX ? "max" : "governed",
+              static_cast<double>(st.frame_sets - before.frame_sets) / seconds, st.latency_p50_ms, st.latency_p99_ms,
+              taken ? 100.0 * static_cast<double>(cells) / (17.0 * static_cast<double>(taken)) : 0.0, st.model,
+              st.views_detected, st.views_detected == 1 ? "" : "s", rung, st.rung_changes, st.detect_ms);
+  std::fflush(stdout);
+}
+
+// Four MJPEG cameras at 30 frames/s, `width`x`height`, served by ffmpeg on loopback; the rows of --webcams.
+void webcam_rows(const octocap::Calibration& lab, const std::vector<std::string>& files, int width, int height) {
+  const std::string tmp = "/tmp/octocap-bench-webcam-" + std::to_string(getpid());
+  std::vector<std::string> avis, urls;
+  for (int c = 0; c < 4; ++c) {
+    avis.push_back(tmp + "-cam" + std::to_string(c) + ".avi");
+    const std::string cmd = "ffmpeg -loglevel error -y -i " + files[static_cast<size_t>(c)] + " -vf fps=30,scale=" +
+                            std::to_string(width) + ":" + std::to_string(height) + " -c:v mjpeg -q:v 4 -an " + avis.back();
+    if (std::system(cmd.c_str()) != 0) {
+      std::printf("(ffmpeg failed: no webcam rows)\n");
+      return;
+    }
+    urls.push_back("http://127.0.0.1:" + std::to_string(30510 + c) + "/cam.mjpg");
+  }
+  const std::string what = "4 MJPEG " + std::to_string(width) + "x" + std::to_string(height) + " @ 30";
+  for (octocap_live_quality_t q : {OCTOCAP_QUALITY_GOVERNED, OCTOCAP_QUALITY_MAX}) {
+    std::vector<std::unique_ptr<testing::ChildProcess>> servers;  // each ffmpeg serves one client
+    for (int c = 0; c < 4; ++c)
+      servers.push_back(std::make_unique<testing::ChildProcess>(std::vector<std::string>{
+          "/usr/bin/ffmpeg", "-loglevel", "quiet", "-re", "-stream_loop", "-1", "-i", avis[static_cast<size_t>(c)],
+          "-c:v", "copy", "-f", "mpjpeg", "-listen", "1", urls[static_cast<size_t>(c)]}));
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    governed_row(what.c_str(), lab, urls, q, 20);
+  }
+  for (const std::string& avi : avis) std::remove(avi.c_str());
 }
 
 double resident_mb() {
@@ -145,9 +215,24 @@ int main(int argc, char** argv) {
   if (argc == 3 && std::strcmp(argv[1], "--soak") == 0) return soak(lab, std::atof(argv[2]));
   const bool rtsp_only = argc == 2 && std::strcmp(argv[1], "--rtsp") == 0;
   const bool scheduling = argc == 2 && std::strcmp(argv[1], "--scheduling") == 0;
-  if (argc > 1 && !rtsp_only && !scheduling) {
-    std::fprintf(stderr, "usage: octocap_bench_live [--rtsp | --scheduling | --soak SECONDS]\n");
+  const bool webcams = argc >= 2 && std::strcmp(argv[1], "--webcams") == 0;
+  const bool busy = webcams && argc == 3 && std::strcmp(argv[2], "--busy") == 0;
+  if (argc > 1 && !rtsp_only && !scheduling && !(webcams && (argc == 2 || busy))) {
+    std::fprintf(stderr, "usage: octocap_bench_live [--rtsp | --scheduling | --webcams [--busy] | --soak SECONDS]\n");
     return 2;
+  }
+  if (webcams) {
+    std::vector<std::string> files;
+    for (int c = 1; c <= 4; ++c) files.push_back(kVideos + "cam0" + std::to_string(c) + ".mp4");
+    std::unique_ptr<testing::ChildProcess> burner;
+    if (busy) burner = std::make_unique<testing::ChildProcess>(std::vector<std::string>{"/bin/sh", "-c", "while :; do :; done"});
+    std::printf("# octocap live, webcam-class cameras, default detector (movenet-thunder)%s, 20 s a row after 2 s\n\n",
+                busy ? ", one core kept busy by another process" : "");
+    std::printf("| cameras | quality | sets/s | latency p50 / p99 ms | keypoint cells solved | last set | rung changes | detect ms |\n");
+    std::printf("|---|---|---|---|---|---|---|---|\n");
+    webcam_rows(lab, files, 544, 960);
+    webcam_rows(lab, files, 720, 1280);
+    return 0;
   }
   std::printf("# octocap live engine (this machine, default threads; the detector decides the rate)\n\n");
   std::printf("| cameras | model | sets/s | incomplete | collect ms | detect ms | 3D+rig ms | latency p50 / p99 ms | dropped |\n");

@@ -18,7 +18,11 @@ ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 DEST="${OCTOCAP_MODELS_DIR:-$ROOT/.cache/models}"
 TOOLS="$ROOT/.cache/model-tools"
 MARKER="$DEST/.complete-4"
-if [ -f "$MARKER" ]; then exit 0; fi
+if [ -f "$MARKER" ]; then
+  # The cards are source, the networks are built: an edited card reaches a cached model folder.
+  for card in "$ROOT"/models/cards/*.json; do cp "$card" "$DEST/"; done
+  exit 0
+fi
 bash "$ROOT/scripts/fetch-test-photos.sh"
 bash "$ROOT/scripts/fetch-real-videos.sh"  # calibration frames for the INT8 model
 TMP="$(mktemp -d)"

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <limits>
 #include <string>
 #include <thread>
 #include <vector>
@@ -253,6 +254,82 @@ TEST_CASE("live: four real views played as picture-folder cameras solve as the o
     CHECK(cam.nominal_fps == 10);
     CHECK(std::string(cam.name).size() > 0);
   }
+}
+
+TEST_CASE("live: the rate governor reports its choice; a target no host can hold ends on the lighter model",
+          "[live][real][governor]") {
+  testing::TempDir dir;
+  const std::vector<std::string> folders = real_picture_folders(dir, 40);
+  const octocap::Calibration calib = octocap::Calibration::load(kDemo + "/calibration/Calib_qualisys.toml");
+  struct Case {
+    octocap_live_quality_t quality;
+    float target_fps;
+  };
+  // 1000 sets a second leaves a set 0.9 ms: nothing detects four views in that, so the governor must reach its last
+  // rung, Thunder's lighter model on one view. Half a set a second leaves 1.8 s: the best rung holds on any host,
+  // sanitizers included. Max: every view, Thunder, no governor.
+  for (const Case& c : {Case{OCTOCAP_QUALITY_GOVERNED, 1000}, Case{OCTOCAP_QUALITY_GOVERNED, 0.5f},
+                        Case{OCTOCAP_QUALITY_MAX, 0}}) {
+    INFO("quality " << c.quality << ", target " << c.target_fps << " sets/s");
+    octocap_live_config_t cfg;
+    octocap_live_config_init(&cfg);
+    CHECK(cfg.quality == OCTOCAP_QUALITY_GOVERNED);
+    CHECK(cfg.target_fps == 0);
+    CHECK(cfg.latency_budget_ms == 100);
+    cfg.picture_rate_hz = 10;
+    cfg.quality = c.quality;
+    cfg.target_fps = c.target_fps;
+    cfg.latency_budget_ms = 10000;
+    octocap::Live live(cfg, coco_session(), calib, folders);
+    octocap_detector_config_t detector;
+    octocap_detector_config_init(&detector);  // movenet-thunder, whose card names movenet-lightning as its lighter
+    live.set_detector(detector);
+    live.start();
+    uint64_t frames = 0;
+    while (live.take(10000)) ++frames;  // until the folders played out
+    const octocap_live_stats_t s = live.stats();
+    INFO("sets " << s.frame_sets << ", rung " << s.quality_rung << " of " << s.quality_rungs << ", " << s.model
+                 << " on " << s.views_detected << " views, budget used " << s.budget_used << ", changes "
+                 << s.rung_changes);
+    REQUIRE(frames >= 5);
+    if (c.quality == OCTOCAP_QUALITY_MAX) {
+      CHECK(s.quality_rungs == 0);
+      CHECK(std::string(s.model) == "movenet-thunder");
+      CHECK(s.views_detected == 4);
+      continue;
+    }
+    CHECK(s.quality_rungs == 5);  // Thunder on 4, 3, 2, 1 views, Lightning on 1
+    CHECK(s.target_fps == c.target_fps);  // as configured: a float passed through
+    if (c.target_fps > 100) {
+      CHECK(s.quality_rung == 4);
+      CHECK(std::string(s.model) == "movenet-lightning");
+      CHECK(s.budget_used > 1);
+      CHECK(s.rung_changes >= 1);
+    } else {
+      CHECK(s.quality_rung == 0);
+      CHECK(std::string(s.model) == "movenet-thunder");
+      CHECK(s.views_detected == 4);
+      CHECK(s.rung_changes == 0);
+      CHECK(s.budget_used < 1);
+    }
+  }
+  // What the governor cannot take: an unknown quality, a rate or budget out of range.
+  octocap_live_config_t bad;
+  octocap_live_config_init(&bad);
+  bad.quality = 7;
+  octocap_live_t* l = nullptr;
+  const std::vector<const char*> cams = {folders[0].c_str(), folders[1].c_str(), folders[2].c_str(), folders[3].c_str()};
+  const octocap_session_config_t scfg = coco_session();
+  CHECK(octocap_live_create(&bad, &scfg, calib.get(), cams.data(), 4, &l) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  CHECK_THAT(octocap_last_error(), ContainsSubstring("quality"));
+  octocap_live_config_init(&bad);
+  bad.target_fps = std::numeric_limits<float>::quiet_NaN();
+  CHECK(octocap_live_create(&bad, &scfg, calib.get(), cams.data(), 4, &l) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  octocap_live_config_init(&bad);
+  bad.latency_budget_ms = 5;
+  CHECK(octocap_live_create(&bad, &scfg, calib.get(), cams.data(), 4, &l) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  CHECK_THAT(octocap_last_error(), ContainsSubstring("latency_budget_ms"));
+  CHECK(l == nullptr);
 }
 
 TEST_CASE("live: a recorded take solves again offline exactly as it solved live", "[live][real][record]") {
@@ -517,6 +594,7 @@ TEST_CASE("octocap live: real videos as cameras to a TRC, with the per-stage tab
   CHECK_THAT(r.output, ContainsSubstring("latency (grab to frame): p50"));
   CHECK_THAT(r.output, ContainsSubstring("camera cam_04"));
   CHECK_THAT(r.output, ContainsSubstring("reconnects 0"));
+  CHECK_THAT(r.output, ContainsSubstring("quality governed at "));  // the default: the rate governor says its choice
   // The TRC holds the header and at least one solved frame.
   const octocap::Motion take(dir.file("take.trc"));
   CHECK(take.frame_count() >= 1);

@@ -26,6 +26,9 @@ int live(const LiveOptions& o) {
   octocap_live_config_t cfg;
   octocap_live_config_init(&cfg);
   cfg.picture_rate_hz = static_cast<float>(o.picture_rate_hz);
+  cfg.quality = o.quality == "max" ? OCTOCAP_QUALITY_MAX : OCTOCAP_QUALITY_GOVERNED;
+  cfg.target_fps = static_cast<float>(o.target_fps);
+  cfg.latency_budget_ms = o.latency_budget_ms;
   // Remote cameras (dds://NODE/CAMERA) are read where this rig streams: one DDS domain and topic per rig.
   cfg.remote_domain_id = o.out.domain;
   std::snprintf(cfg.remote_topic, sizeof cfg.remote_topic, "%s", o.out.topic.c_str());
@@ -76,8 +79,12 @@ int live(const LiveOptions& o) {
     if (!frame && s.finished) break;  // every camera played out
     if (!o.quiet && std::chrono::steady_clock::now() - last_status >= std::chrono::seconds(1)) {
       last_status = std::chrono::steady_clock::now();
-      std::fprintf(stderr, "\r%6.1f s  solved %5.1f fps  latency p50 %5.0f ms p99 %5.0f ms  cameras", elapsed, s.fps,
+      std::fprintf(stderr, "\r%6.1f s  solved %5.1f fps  latency p50 %5.0f ms p99 %5.0f ms  ", elapsed, s.fps,
                    s.latency_p50_ms, s.latency_p99_ms);
+      if (s.quality_rungs > 0)
+        std::fprintf(stderr, "%s on %u view%s (rung %u/%u)  ", s.model, s.views_detected, s.views_detected == 1 ? "" : "s",
+                     s.quality_rung + 1, s.quality_rungs);
+      std::fprintf(stderr, "cameras");
       live_common::print_camera_rates(capture, s.camera_count);
     }
   }
@@ -96,6 +103,10 @@ int live(const LiveOptions& o) {
               s.capture_ms, s.detect_ms, s.solve_ms, s.publish_ms);
   std::printf("  latency (grab to frame): p50 %.1f ms, p99 %.1f ms; %.1f frames/s\n", s.latency_p50_ms,
               s.latency_p99_ms, s.fps);
+  if (s.quality_rungs > 0)
+    std::printf("  quality governed at %.1f sets/s: last set %s on %u of %u views (rung %u of %u, %.0f %% of its budget), "
+                "%u rung changes\n", s.target_fps, s.model, s.views_detected, s.camera_count, s.quality_rung + 1,
+                s.quality_rungs, 100.0 * s.budget_used, s.rung_changes);
   for (uint32_t c = 0; c < s.camera_count; ++c) {
     const octocap_camera_status_t cam = capture.camera(c);
     std::printf("  camera %-10s %-12s %6llu frames, %6llu used, %6llu dropped, reconnects %llu, %.1f fps",

@@ -18,6 +18,9 @@ struct LiveOptions {
   bool quiet = false;
   OutputOptions out;
   std::string people = "1";  // as octocap solve --people
+  std::string quality = "governed";  // or "max" (octocap_live_quality_t)
+  double target_fps = 0;             // 0: the slowest camera's rate
+  unsigned latency_budget_ms = 100;
 };
 
 int run_live(const LiveOptions& options);

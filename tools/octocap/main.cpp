@@ -115,6 +115,9 @@ int main(int argc, char** argv) {
   lv->add_flag("--quiet", live.quiet, "No status line on stderr");
   add_people_option(lv, live.people);
   add_detector_options(lv, live.detector);
+  lv->add_option("--quality", live.quality, "governed: hold --target-fps within --latency-budget, choosing each set how many views the network runs on and which model (README \"Real time\"); max: every view with the model named, whatever the rate")->check(CLI::IsMember({"governed", "max"}))->capture_default_str();
+  lv->add_option("--target-fps", live.target_fps, "Sets a second the governor holds (0: the slowest camera's rate)")->check(CLI::Range(0.0, 1000.0))->capture_default_str();
+  lv->add_option("--latency-budget", live.latency_budget_ms, "Grab to frame, ms, that the governor keeps sets within")->check(CLI::Range(10, 10000))->capture_default_str();
 
   SyncOptions sync;
   CLI::App* sy = app.add_subcommand("sync", "Estimate each camera's time offset from the person's motion (unsynchronised cameras)");

@@ -352,6 +352,13 @@ namespace Octocap
         // 1.1: where remote cameras (dds://NODE/CAMERA, capture nodes' keypoints) are read.
         public uint RemoteDomainId;
         public Name32 RemoteTopic;
+        /// <summary>1.8. Governed (default): hold TargetFps within LatencyBudgetMs, choosing each set how much detection
+        /// it gets; Max: every set detected as the detector config says.</summary>
+        public LiveQuality Quality;
+        /// <summary>1.8. Sets a second the governor holds; 0 (default): the slowest camera's rate.</summary>
+        public float TargetFps;
+        /// <summary>1.8. Grab to frame, ms, that the governor keeps sets within. Default 100.</summary>
+        public uint LatencyBudgetMs;
 
         public static LiveConfig Default
         {
@@ -390,7 +397,23 @@ namespace Octocap
         public uint Failed;
         /// <summary>1.6. The last error: what failed the engine, a set that could not be solved, a recording's write error.</summary>
         public ErrorText LastError;
+        // 1.8: the rate governor's choice for the last set.
+        /// <summary>1.8. Its rung of the quality ladder, 0 the best.</summary>
+        public uint QualityRung;
+        /// <summary>1.8. Rungs of the ladder; 0: not governed.</summary>
+        public uint QualityRungs;
+        /// <summary>1.8. Views the network ran on in the last set (the others followed by optical flow).</summary>
+        public uint ViewsDetected;
+        public float TargetFps;
+        /// <summary>1.8. Smoothed cost of the sets over what a set may cost; above 1 the governor steps down.</summary>
+        public float BudgetUsed;
+        public uint RungChanges;
+        /// <summary>1.8. The model card's name of the network that ran the last set.</summary>
+        public Name32 Model;
     }
+
+    /// <summary>octocap_live_quality_t (1.8).</summary>
+    public enum LiveQuality : int { Governed = 0, Max = 1 }
 
     public enum CameraState : int { Stopped = 0, Connecting = 1, Streaming = 2, Reconnecting = 3, Ended = 4, Failed = 5 }
 

@@ -93,7 +93,8 @@ static void layout(void) {
   FIELD(octocap_live_config_t, max_wait_us); FIELD(octocap_live_config_t, open_timeout_ms);
   FIELD(octocap_live_config_t, read_timeout_ms); FIELD(octocap_live_config_t, reconnect_max_ms);
   FIELD(octocap_live_config_t, picture_rate_hz); FIELD(octocap_live_config_t, remote_domain_id);
-  FIELD(octocap_live_config_t, remote_topic);
+  FIELD(octocap_live_config_t, remote_topic); FIELD(octocap_live_config_t, quality);
+  FIELD(octocap_live_config_t, target_fps); FIELD(octocap_live_config_t, latency_budget_ms);
   SIZE(octocap_live_stats_t);
   FIELD(octocap_live_stats_t, struct_size); FIELD(octocap_live_stats_t, running); FIELD(octocap_live_stats_t, finished);
   FIELD(octocap_live_stats_t, camera_count); FIELD(octocap_live_stats_t, frame_sets);
@@ -103,6 +104,9 @@ static void layout(void) {
   FIELD(octocap_live_stats_t, latency_p50_ms); FIELD(octocap_live_stats_t, latency_p99_ms);
   FIELD(octocap_live_stats_t, sets_recorded); FIELD(octocap_live_stats_t, recording_pictures_dropped);
   FIELD(octocap_live_stats_t, failed); FIELD(octocap_live_stats_t, last_error);
+  FIELD(octocap_live_stats_t, quality_rung); FIELD(octocap_live_stats_t, quality_rungs);
+  FIELD(octocap_live_stats_t, views_detected); FIELD(octocap_live_stats_t, target_fps);
+  FIELD(octocap_live_stats_t, budget_used); FIELD(octocap_live_stats_t, rung_changes); FIELD(octocap_live_stats_t, model);
   SIZE(octocap_camera_status_t);
   FIELD(octocap_camera_status_t, struct_size); FIELD(octocap_camera_status_t, state);
   FIELD(octocap_camera_status_t, grabbed); FIELD(octocap_camera_status_t, used); FIELD(octocap_camera_status_t, dropped);

@@ -83,7 +83,7 @@ extern "C" {
 
 /** Version of this header. The library's own is octocap_version_number(). */
 #define OCTOCAP_VERSION_MAJOR 1
-#define OCTOCAP_VERSION_MINOR 7
+#define OCTOCAP_VERSION_MINOR 8
 #define OCTOCAP_VERSION_PATCH 0
 /** MAJOR * 10000 + MINOR * 100 + PATCH: 10000 for 1.0.0. */
 #define OCTOCAP_VERSION_NUMBER (OCTOCAP_VERSION_MAJOR * 10000 + OCTOCAP_VERSION_MINOR * 100 + OCTOCAP_VERSION_PATCH)
@@ -798,6 +798,23 @@ OCTOCAP_API octocap_result_t octocap_session_reset(octocap_session_t* session);
 /** Opaque live capture. */
 typedef struct octocap_live_t octocap_live_t;
 
+/** (1.8) How a live capture trades accuracy for rate. */
+typedef int32_t octocap_live_quality_t;
+/** Values of ::octocap_live_quality_t. */
+enum octocap_live_quality_values {
+  OCTOCAP_QUALITY_GOVERNED = 0, /**< The rate governor: each set it picks a rung of a quality ladder from what the
+                                     last sets cost, best first: the model on every view (at most the detector
+                                     config's views_per_frame), on one view fewer, ... on one view (the others follow
+                                     their people by optical flow), then the model card's lighter model (Thunder's:
+                                     Lightning) on one view. It steps down within a few sets when sets cost more than
+                                     the target period (or the latency budget) and back up after a hold of 2 s that
+                                     doubles, up to 30 s, each time a step up had to be undone. octocap_live_stats_t
+                                     says what it chose. Per view and crop detection only (the mosaic is one
+                                     inference already). */
+  OCTOCAP_QUALITY_MAX = 1       /**< Every set detected as the detector config says: the best accuracy, at whatever
+                                     rate the host manages (latency stays bounded: sets are dropped, never queued). */
+};
+
 /** Live configuration. Fill with octocap_live_config_init() first. */
 typedef struct octocap_live_config_t {
   uint32_t struct_size;          /**< sizeof(octocap_live_config_t); set by octocap_live_config_init(). */
@@ -812,6 +829,13 @@ typedef struct octocap_live_config_t {
   /* 1.1 */
   uint32_t remote_domain_id;     /**< DDS domain of remote cameras' keypoints. Default 0. */
   char remote_topic[OCTOCAP_NAME_CAPACITY]; /**< Their topic base name ("<name>_keypoints2d"). Default "octocap". */
+  /* 1.8 */
+  octocap_live_quality_t quality; /**< ::OCTOCAP_QUALITY_GOVERNED (default): hold target_fps within the latency budget,
+                                      choosing each set how much detection it gets; ::OCTOCAP_QUALITY_MAX: every set
+                                      gets the detector config's detection, however long it takes. */
+  float target_fps;              /**< Sets a second the governor holds. 0 (default): the slowest camera's rate. */
+  uint32_t latency_budget_ms;    /**< Grab of a set's oldest picture to its frame, that the governor keeps sets
+                                      within (collection counts). Default 100; 10 .. 10000. */
 } octocap_live_config_t;
 
 /** Fills the first `struct_size` bytes of `cfg` with defaults (STRUCT_SIZE for an unknown size). Call it through
@@ -850,6 +874,17 @@ typedef struct octocap_live_stats_t {
                                       octocap_live_stop() as always. */
   char last_error[OCTOCAP_ERROR_TEXT_CAPACITY]; /**< The last error ("" none): what failed the engine, a frame set
                                       that could not be solved (the engine goes on), the recording's write error. */
+  /* 1.8 */
+  uint32_t quality_rung;         /**< The governor's rung for the last set, 0 the best (::OCTOCAP_QUALITY_GOVERNED). */
+  uint32_t quality_rungs;        /**< Rungs of its ladder; 0: not governed (::OCTOCAP_QUALITY_MAX, the mosaic, or
+                                      every camera detected on a capture node). */
+  uint32_t views_detected;       /**< Views the network ran on in the last set (the others followed by optical flow;
+                                      a view that lost its person is detected whatever the rung). */
+  float target_fps;              /**< The rate the governor holds (0: not governed). */
+  float budget_used;             /**< Smoothed cost of the last sets over what a set may cost (the target period, or
+                                      less where the latency budget is tighter); above 1 the governor steps down. */
+  uint32_t rung_changes;         /**< Times the governor changed rung since start. */
+  char model[OCTOCAP_NAME_CAPACITY]; /**< The model card's name of the network that ran the last set ("" none). */
 } octocap_live_stats_t;
 
 /** State of one camera. */

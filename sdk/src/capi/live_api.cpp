@@ -84,6 +84,10 @@ octocap_result_t octocap_live_config_defaults(octocap_live_config_t* c, uint32_t
     octocap_live_config_t d{};
     capi::set_feed_defaults(d);
     capi::copy_name(d.remote_topic, sizeof d.remote_topic, "octocap");
+    const LiveConfig live;
+    d.quality = live.governed ? OCTOCAP_QUALITY_GOVERNED : OCTOCAP_QUALITY_MAX;
+    d.target_fps = static_cast<float>(live.target_fps);
+    d.latency_budget_ms = static_cast<uint32_t>(live.latency_budget_ms);
     capi::write_defaults(c, struct_size, d);
   });
 }
@@ -108,6 +112,16 @@ octocap_result_t octocap_live_create(const octocap_live_config_t* given, const o
     config.max_wait_us = c.max_wait_us;
     config.remote_domain_id = capi::domain_id(c.remote_domain_id);
     config.remote_topic = capi::topic_name(c.remote_topic, sizeof c.remote_topic, "cfg.remote_topic");
+    if (c.quality != OCTOCAP_QUALITY_GOVERNED && c.quality != OCTOCAP_QUALITY_MAX)
+      throw Error(Errc::invalid_argument, "cfg.quality must be OCTOCAP_QUALITY_GOVERNED or OCTOCAP_QUALITY_MAX");
+    capi::require_finite(c.target_fps, "cfg.target_fps");
+    if (c.target_fps < 0 || c.target_fps > 1000)
+      throw Error(Errc::invalid_argument, "cfg.target_fps must be 0 (the cameras' rate) to 1000");
+    if (c.latency_budget_ms < 10 || c.latency_budget_ms > 10000)
+      throw Error(Errc::invalid_argument, "cfg.latency_budget_ms must be 10 to 10000");
+    config.governed = c.quality == OCTOCAP_QUALITY_GOVERNED;
+    config.target_fps = c.target_fps;
+    config.latency_budget_ms = c.latency_budget_ms;
     auto engine = std::make_unique<LiveEngine>(config, calib->cameras, capi::strings(cameras, camera_count, "camera"));
     *out = capi::make_handle<octocap_live_t>(std::move(engine));
   });
@@ -192,6 +206,13 @@ octocap_result_t octocap_live_get_stats(const octocap_live_t* l, octocap_live_st
       o.recording_pictures_dropped = s.recording_pictures_dropped;
       o.failed = s.failed ? 1 : 0;
       capi::copy_name(o.last_error, sizeof o.last_error, s.last_error);
+      o.quality_rung = s.quality_rung;
+      o.quality_rungs = s.quality_rungs;
+      o.views_detected = s.views_detected;
+      o.target_fps = static_cast<float>(s.target_fps);
+      o.budget_used = static_cast<float>(s.budget_used);
+      o.rung_changes = static_cast<uint32_t>(s.rung_changes);
+      capi::copy_name(o.model, sizeof o.model, s.model);
     });
   });
 }

@@ -26,8 +26,8 @@ constexpr std::initializer_list<uint32_t> kSubscriberConfigSizes = {52};
 // octocap_extrinsics_options_t: without (32) and with `refine` (36).
 constexpr std::initializer_list<uint32_t> kExtrinsicsOptionsSizes = {32, 36};
 
-// octocap_live_config_t: 1.0 (28), 1.1 remote cameras (64).
-constexpr std::initializer_list<uint32_t> kLiveConfigSizes = {28, 64};
+// octocap_live_config_t: 1.0 (28), 1.1 remote cameras (64), 1.8 the rate governor (76).
+constexpr std::initializer_list<uint32_t> kLiveConfigSizes = {28, 64, 76};
 // octocap_node_config_t: 1.1 (92).
 constexpr std::initializer_list<uint32_t> kNodeConfigSizes = {92};
 
@@ -42,7 +42,7 @@ static_assert(sizeof(octocap_session_config_t) == 224 && offsetof(octocap_sessio
 static_assert(offsetof(LegacySessionConfig03, detector) == 216 && sizeof(LegacySessionConfig03) == 760,
               "the 0.3 layout must stay byte-exact");
 static_assert(sizeof(octocap_detector_config_t) == 552 && sizeof(octocap_subscriber_config_t) == 52 &&
-                  sizeof(octocap_extrinsics_options_t) == 36 && sizeof(octocap_live_config_t) == 64 &&
+                  sizeof(octocap_extrinsics_options_t) == 36 && sizeof(octocap_live_config_t) == 76 &&
                   sizeof(octocap_node_config_t) == 92,
               "a config struct grew: add its new size to the tables above and to tests/abi");
 

@@ -127,32 +127,65 @@ Detector::Detector(const DetectorConfig& config) : config_(config) {
   if (config.mosaic_tile < 32 || config.mosaic_tile > 4096)
     throw Error(Errc::invalid_argument, "mosaic tile must be 32..4096 pixels, got " + std::to_string(config.mosaic_tile));
   if (config.max_people == 0) throw Error(Errc::invalid_argument, "max people per view must be at least 1");
-  path_ = resolve_model_path(config.model, config.mode);
-  card_ = read_model_card(model_card_path(path_));
-  if (card_.quantized && !cpu_has_vnni())
-    log(LogLevel::warning, "model " + card_.name + " is quantised to INT8, and this CPU has no VNNI: here it runs "
-                           "hardly faster and less accurately than the float model it was made from");
-  if (config.mode == DetectMode::mosaic && (card_.max_people < 2 || !card_.dynamic_size))
-    throw Error(Errc::invalid_argument, "the mosaic needs a multi-person model that accepts any input size (one "
-                                        "person per tile); " + card_.name + " is not one: use movenet-multipose");
   if (config.parallel_views < 0) throw Error(Errc::invalid_argument, "parallel views must be >= 0");
   if (config.views_per_frame < 0) throw Error(Errc::invalid_argument, "views detected per frame must be >= 0");
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   parallel_ = config.mode == DetectMode::mosaic ? 1 : config.parallel_views == 0 ? cores : config.parallel_views;
+  networks_.push_back(load_network(resolve_model_path(config.model, config.mode)));
+  const ModelCard& named = networks_.front().card;
+  if (config.mode == DetectMode::mosaic && (named.max_people < 2 || !named.dynamic_size))
+    throw Error(Errc::invalid_argument, "the mosaic needs a multi-person model that accepts any input size (one "
+                                        "person per tile); " + named.name + " is not one: use movenet-multipose");
+  if (config.load_lighter && !named.lighter.empty() && config.mode != DetectMode::mosaic) {
+    // The card's path is relative to the card: a shipped name is looked up as any model name is.
+    std::string lighter = named.lighter;
+    if (lighter.find('/') != std::string::npos && lighter.front() != '/') {
+      const std::string& first = networks_.front().path;
+      lighter = first.substr(0, first.find_last_of('/') + 1) + lighter;
+    }
+    Network light = load_network(resolve_model_path(lighter, config.mode));
+    if (light.card.layout != named.layout || light.card.max_people != named.max_people)
+      throw Error(Errc::parse, "model " + named.name + ": its lighter model " + light.card.name + " (" + light.path +
+                                   ") gives another keypoint layout or number of people");
+    networks_.push_back(std::move(light));
+  }
+  use_network(0, config.views_per_frame);
+}
+
+Detector::Network Detector::load_network(const std::string& path) const {
+  Network n;
+  n.path = path;
+  n.card = read_model_card(model_card_path(path));
+  if (n.card.quantized && !cpu_has_vnni())
+    log(LogLevel::warning, "model " + n.card.name + " is quantised to INT8, and this CPU has no VNNI: here it runs "
+                           "hardly faster and less accurately than the float model it was made from");
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   // Views in parallel share the cores: each inference gets its part unless the caller chose.
-  const int intra = config.threads > 0 ? config.threads : parallel_ > 1 ? std::max(1, cores / parallel_) : 0;
-  model_ = std::make_unique<OrtModel>(path_, card_, intra, config.device != Device::cpu, config.device == Device::cuda);
+  const int intra = config_.threads > 0 ? config_.threads : parallel_ > 1 ? std::max(1, cores / parallel_) : 0;
+  n.model = std::make_unique<OrtModel>(path, n.card, intra, config_.device != Device::cpu, config_.device == Device::cuda);
   // One run on a blank canvas: a card whose outputs do not fit its kind fails here, once, at load, instead of on
   // every frame of a live take that then solves nothing.
-  const auto [w, h] = input_size_for(static_cast<double>(card_.input_width) / card_.input_height);
+  const int w = n.card.dynamic_size ? round_to_multiple(n.card.input_width, n.card.size_multiple) : n.card.input_width;
+  const int h = n.card.dynamic_size ? round_to_multiple(n.card.input_height, n.card.size_multiple) : n.card.input_height;
   RgbCanvas canvas;
   canvas.reset(w, h);
   try {
-    decode_pose(card_, model_->run(canvas), w, h, layout(card_.layout).keypoints.size());
+    decode_pose(n.card, n.model->run(canvas), w, h, layout(n.card.layout).keypoints.size());
   } catch (const std::exception& e) {
-    throw Error(Errc::parse, "model " + card_.name + " (" + path_ + "): its outputs do not fit its card's output kind \"" +
-                                 output_kind_name(card_.output) + "\": " + e.what());
+    throw Error(Errc::parse, "model " + n.card.name + " (" + path + "): its outputs do not fit its card's output kind \"" +
+                                 output_kind_name(n.card.output) + "\": " + e.what());
   }
+  return n;
+}
+
+void Detector::use_network(size_t network, int views_per_frame) {
+  if (network >= networks_.size() || views_per_frame < 0)
+    throw Error(Errc::invalid_argument, "no such network or views per frame");
+  active_ = network;
+  path_ = networks_[network].path;
+  card_ = networks_[network].card;
+  model_ = networks_[network].model.get();
+  config_.views_per_frame = views_per_frame;
 }
 
 Detector::~Detector() = default;

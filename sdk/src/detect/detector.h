@@ -44,6 +44,9 @@ struct DetectorConfig {
   // longest ago. 0: every view every frame.
   int views_per_frame = 0;
   Device device = Device::cpu;
+  // Also load the model card's lighter model (its "lighter" key), for a caller that trades accuracy for time set by
+  // set (the live engine's rate governor, use_network()). Per view and crop only.
+  bool load_lighter = false;
 };
 
 struct DetectTimings {
@@ -79,7 +82,13 @@ class Detector {
   void set_hints(std::vector<std::vector<Person2D>> hints) { hints_ = std::move(hints); }
   static constexpr double kHintConfidence = 0.01;
 
+  // The card of the network running now (all networks give the same layout and number of people).
   const ModelCard& card() const { return card_; }
+  // Networks loaded: the model named, then its lighter one where load_lighter found one.
+  size_t networks() const { return networks_.size(); }
+  size_t active_network() const { return active_; }
+  // From the next detect(): which network runs, and on how many views (views_per_frame). Between detect()s only.
+  void use_network(size_t network, int views_per_frame);
   const DetectorConfig& config() const { return config_; }
   const std::string& model_path() const { return path_; }
   const DetectTimings& timings() const { return timings_; }
@@ -103,10 +112,21 @@ class Detector {
   // A view's people this frame: detected, or followed from last frame's by optical flow.
   std::vector<DetectedPerson> detect_or_track(size_t v, const ImageView& view, bool scheduled, bool detect);
 
+  struct Network {
+    std::string path;
+    ModelCard card;
+    std::unique_ptr<OrtModel> model;
+  };
+  // Reads the card beside `path`, loads the network and runs it once (Error(parse) when its outputs misfit the card).
+  Network load_network(const std::string& path) const;
+
   DetectorConfig config_;
+  std::vector<Network> networks_;
+  size_t active_ = 0;
+  // The active network's (use_network()).
   std::string path_;
   ModelCard card_;
-  std::unique_ptr<OrtModel> model_;
+  OrtModel* model_ = nullptr;
   int parallel_ = 1;
   // The threads that detect views at once, made once: threads made per frame cost their start, and every new
   // thread OpenCV runs on keeps thread-local buffers it never frees (a live take grew 1.6 MB a minute).

@@ -106,6 +106,7 @@ ModelCard read_model_card(const std::string& path) {
     card.max_people = output.contains("max_people") ? positive_int(output, "max_people", out_where, 1000) : 1;
     card.simcc_ratio = output.value("simcc_ratio", 2.0);
     card.score_threshold = output.value("score_threshold", 0.25);
+    card.lighter = doc.value("lighter", std::string());
     return card;
   } catch (const json::exception& e) {
     throw Error(Errc::parse, path + ": " + e.what());

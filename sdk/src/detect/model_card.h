@@ -27,6 +27,9 @@ struct ModelCard {
   int max_people = 1;
   double simcc_ratio = 2.0;
   double score_threshold = 0.25;
+  // A faster model of the same layout (a shipped name, or a .onnx path relative to this card) that a governed live
+  // capture steps down to when even one view detected a set is too slow; "" none.
+  std::string lighter;
 };
 
 // Throws Error(io / parse) naming the file and the key.

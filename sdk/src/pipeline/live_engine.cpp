@@ -13,6 +13,7 @@
 #include "core/log.h"
 #include "core/stats.h"
 #include "pipeline/live_recorder.h"
+#include "pipeline/rate_governor.h"
 
 namespace octocap {
 namespace {
@@ -62,7 +63,10 @@ const CameraSpec& LiveEngine::camera_spec(size_t i) const { return feeds_.at(i)-
 
 void LiveEngine::set_detector(const DetectorConfig& config) {
   if (running_) throw Error(Errc::invalid_argument, "the live engine is running: set the detector before start");
-  session_->set_detector(config);
+  DetectorConfig c = config;
+  c.load_lighter = config_.governed;  // the ladder's last rung
+  session_->set_detector(c);
+  top_views_ = config.views_per_frame;
 }
 
 void LiveEngine::set_latency_offsets(const std::vector<int64_t>& offsets_us) {
@@ -84,7 +88,20 @@ void LiveEngine::start() {
   if (running_) throw Error(Errc::invalid_argument, "the live engine is already running");
   // Fail before opening cameras; a hub whose cameras are all remote needs no detector (nor models).
   const bool local = std::any_of(feeds_.begin(), feeds_.end(), [](const auto& f) { return f->spec().kind != SourceKind::remote; });
-  if (local && !session_->detector()) session_->set_detector(config_.session.detector);
+  if (local && !session_->detector()) set_detector(config_.session.detector);
+  governor_.reset();
+  Detector* detector = session_->detector();
+  if (local && detector && config_.governed && detector->config().mode != DetectMode::mosaic) {
+    const int views = static_cast<int>(std::count_if(feeds_.begin(), feeds_.end(),
+                                                     [](const auto& f) { return f->spec().kind != SourceKind::remote; }));
+    GovernorOptions options;
+    options.target_fps = config_.target_fps > 0 ? config_.target_fps : 30;
+    options.latency_budget_ms = config_.latency_budget_ms;
+    governor_ = std::make_unique<RateGovernor>(
+        quality_ladder(views, top_views_, static_cast<int>(detector->networks())), options);
+  } else if (detector) {
+    detector->use_network(0, top_views_);  // a capture that was governed before runs as configured
+  }
   if (!record_dir_.empty()) {
     std::vector<bool> pictures;
     for (const auto& f : feeds_) pictures.push_back(f->spec().kind != SourceKind::remote);
@@ -123,6 +140,7 @@ void LiveEngine::update_sync_window() {
   }
   if (slowest <= 0) slowest = 30;
   slowest = std::max(slowest, 5.0);  // a camera slower than 5 pictures a second sets no window wider than 200 ms
+  slowest_fps_ = slowest;
   sync_.tolerance_us = config_.sync_tolerance_us > 0 ? config_.sync_tolerance_us : static_cast<int64_t>(0.5e6 / slowest);
   // A period and a half: a camera that delivers once a period, with jitter (a capture node's detection time
   // varies), is still awaited; one silent that long is not.
@@ -239,8 +257,30 @@ std::string LiveEngine::wrong_picture(const std::vector<CapturedFrame>& frames, 
   return "";
 }
 
+void LiveEngine::govern_before_set() {
+  if (!governor_) return;
+  // The cameras' rate is known only once they deliver; a configured target stays.
+  if (config_.target_fps <= 0) governor_->set_target_fps(slowest_fps_);
+  const QualityRung& r = governor_->rung();
+  session_->detector()->use_network(static_cast<size_t>(r.network), r.views);
+}
+
+void LiveEngine::govern_after_set(double cost_ms, double wait_ms, int64_t now_us) {
+  const Detector* detector = session_->detector();
+  const bool changed = governor_ && governor_->observe(cost_ms, wait_ms, now_us);
+  const std::lock_guard<std::mutex> lock(mutex_);
+  if (detector) stats_.model = detector->card().name;
+  if (!governor_) return;
+  stats_.quality_rung = static_cast<uint32_t>(governor_->rung_index());
+  stats_.quality_rungs = static_cast<uint32_t>(governor_->rungs());
+  stats_.target_fps = config_.target_fps > 0 ? config_.target_fps : slowest_fps_;
+  stats_.budget_used = governor_->budget_used();
+  if (changed) ++stats_.rung_changes;
+}
+
 void LiveEngine::solve_set(const std::vector<CapturedFrame>& frames, const std::vector<bool>& present,
                            int64_t set_time_us) {
+  govern_before_set();
   const int64_t t0 = monotonic_us();
   int64_t oldest_grab = t0;
   std::vector<ImageView> views(frames.size());
@@ -269,6 +309,10 @@ void LiveEngine::solve_set(const std::vector<CapturedFrame>& frames, const std::
   auto frame = std::make_shared<const FrameResult>(session_->result());
   const bool detected = std::any_of(views.begin(), views.end(), [](const ImageView& v) { return !absent(v); });
   const double detect_ms = detected && session_->detector() ? session_->detector()->timings().total_ms : 0;
+  const uint32_t pictures = static_cast<uint32_t>(std::count_if(views.begin(), views.end(), [](const ImageView& v) { return !absent(v); }));
+  const uint32_t views_detected =
+      detected && session_->detector() ? pictures - static_cast<uint32_t>(session_->detector()->timings().views_tracked) : 0;
+  govern_after_set(static_cast<double>(t1 - t0) / 1000.0, static_cast<double>(t0 - oldest_grab) / 1000.0, t1);
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     if (latest_serial_ > taken_serial_) ++stats_.frames_not_taken;
@@ -277,6 +321,7 @@ void LiveEngine::solve_set(const std::vector<CapturedFrame>& frames, const std::
     const uint64_t k = ++stats_.frame_sets;
     if (std::find(present.begin(), present.end(), false) != present.end()) ++stats_.sets_incomplete;
     if (solved) ++stats_.frames_with_person;
+    stats_.views_detected = views_detected;
     const double latency = static_cast<double>(monotonic_us() - oldest_grab) / 1000.0;
     accumulate(stats_.capture_ms, static_cast<double>(t0 - oldest_grab) / 1000.0, k);
     accumulate(stats_.detect_ms, detect_ms, k);

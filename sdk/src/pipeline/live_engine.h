@@ -21,6 +21,7 @@
 namespace octocap {
 
 class Feed;
+class RateGovernor;
 class KeypointReceiver;
 class LiveRecorder;
 struct CapturedFrame;
@@ -33,6 +34,10 @@ struct LiveConfig {
   std::vector<int64_t> latency_offsets_us;  // per camera (see FrameSetOptions::offsets_us)
   uint32_t remote_domain_id = 0;            // where remote cameras' keypoints are read (dds://NODE/CAMERA)
   std::string remote_topic = "octocap";     // ... "<topic>_keypoints2d"
+  // The rate governor (rate_governor.h): off, every set gets the detector config's detection (--quality max).
+  bool governed = true;
+  double target_fps = 0;           // sets a second it holds; 0: the slowest camera's rate
+  double latency_budget_ms = 100;  // grab to frame, 99th percentile
 };
 
 // Means over the frames solved so far, and the latency distribution of the last ones.
@@ -54,6 +59,15 @@ struct LiveStats {
   uint64_t recording_pictures_dropped = 0;  // recorded sets whose pictures were left out (the disk was behind)
   std::string last_error;         // a solve that failed, or the recording's write error (the engine goes on)
   bool failed = false;            // the engine stopped on an error it cannot go on from (last_error says which)
+  // The rate governor's choice for the last set: its rung of the quality ladder (0 best) of `quality_rungs` (0: not
+  // governed), the model that ran and on how many views (the others followed by optical flow), the rate it holds
+  // and how much of a set's budget the sets used (smoothed; above 1 it steps down).
+  uint32_t quality_rung = 0, quality_rungs = 0;
+  uint32_t views_detected = 0;
+  std::string model;
+  double target_fps = 0;
+  double budget_used = 0;
+  uint64_t rung_changes = 0;
 };
 
 class LiveEngine {
@@ -95,6 +109,9 @@ class LiveEngine {
   // The sync tolerance and wait now: the configured ones, else from the slowest camera's measured rate (a camera
   // that delivers slower than it says, a host that cannot decode every picture, still makes whole sets).
   void update_sync_window();
+  // Before a set: the rung the governor chose, applied to the detector; after it, what the set cost.
+  void govern_before_set();
+  void govern_after_set(double cost_ms, double wait_ms, int64_t now_us);
 
   LiveConfig config_;
   Calibration calib_;
@@ -104,6 +121,9 @@ class LiveEngine {
   std::string record_dir_;
   std::unique_ptr<LiveRecorder> recorder_;  // from start() to stop(), when recording
   FrameSetOptions sync_;
+  double slowest_fps_ = 30;                 // the slowest camera's rate (update_sync_window)
+  std::unique_ptr<RateGovernor> governor_;  // from start(), when governed and some camera is detected here
+  int top_views_ = 0;                       // the detector config's views_per_frame: the ladder's top
   std::thread thread_;
   std::atomic<bool> running_{false}, stop_{false};
   mutable std::mutex mutex_;          // guards what follows

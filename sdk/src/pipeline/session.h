@@ -92,6 +92,7 @@ class Session {
   // The 2D people the last solve_images() solved, per view in calibration pixels (what solve() would take again).
   const std::vector<std::vector<Person2D>>& image_people() const { return image_people_; }
   const Detector* detector() const { return detector_.get(); }
+  Detector* detector() { return detector_.get(); }  // between solves: the live engine's rate governor steers it
   void reset();
   // Blocks until every published frame has been handed to DDS (no-op without publishing).
   void flush_stream();

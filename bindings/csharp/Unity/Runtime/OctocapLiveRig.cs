@@ -11,11 +11,17 @@ public sealed class OctocapLiveRig : MonoBehaviour
     /// <summary>One per calibrated camera, in calibration order: "/dev/video0" or "0", "rtsp://...", "http://...",
     /// a video file or a picture folder.</summary>
     public string[] cameras = new string[0];
-    public string model = "movenet-lightning";
+    /// <summary>"" : movenet-thunder, which the governor trades for movenet-lightning when even one view a set is
+    /// too slow.</summary>
+    public string model = "";
     public DetectMode mode = DetectMode.Crop;
-    /// <summary>Views the network runs on each set, the others followed by optical flow (0: every view). Live use
-    /// favours the rate: with four cameras, 2 doubles it for ~2 mm (README "Real time").</summary>
-    public int viewsPerFrame = 2;
+    /// <summary>At most this many views run the network each set, the others followed by optical flow (0: every view;
+    /// the governor then decides how many, README "Real time").</summary>
+    public int viewsPerFrame = 0;
+    /// <summary>Governed: hold targetFps (0: the cameras' rate) with bounded latency, trading detection for rate; Max: every
+    /// view detected, whatever the rate.</summary>
+    public LiveQuality quality = LiveQuality.Governed;
+    public float targetFps = 0;
     /// <summary>Auto: the GPU when the GPU build of ONNX Runtime and a GPU are there, else the CPU.</summary>
     public Device device = Device.Auto;
     /// <summary>Avatars driven by this capture (each by its bindBy and person: Slot 0, 1, ... one person each).</summary>
@@ -30,7 +36,10 @@ public sealed class OctocapLiveRig : MonoBehaviour
         _calibration = Calibration.Load(calibrationPath);
         SessionConfig session = SessionConfig.Default;
         session.Layout = Layout.Coco17;  // the shipped models' layout
-        Live = new Live(LiveConfig.Default, session, _calibration, cameras);
+        LiveConfig config = LiveConfig.Default;
+        config.Quality = quality;
+        config.TargetFps = Math.Max(0f, targetFps);
+        Live = new Live(config, session, _calibration, cameras);
         DetectorConfig detector = DetectorConfig.Default;
         detector.SetModel(model);
         detector.Mode = mode;

@@ -8,10 +8,16 @@ public partial class OctocapLiveNode : Node
     [Export] public string CalibrationPath = "calibration.toml";
     /// <summary>One per calibrated camera, in calibration order: "/dev/video0", "rtsp://...", "http://...", a file.</summary>
     [Export] public string[] Cameras = new string[0];
-    [Export] public string Model = "movenet-lightning";
-    /// <summary>Views the network runs on each set, the others followed by optical flow (0: every view). Live use
-    /// favours the rate: with four cameras, 2 doubles it for ~2 mm (README "Real time").</summary>
-    [Export] public int ViewsPerFrame = 2;
+    /// <summary>"" : movenet-thunder, which the governor trades for movenet-lightning when even one view a set is
+    /// too slow.</summary>
+    [Export] public string Model = "";
+    /// <summary>At most this many views run the network each set, the others followed by optical flow (0: every view;
+    /// the governor then decides how many, README "Real time").</summary>
+    [Export] public int ViewsPerFrame = 0;
+    /// <summary>Governed: hold TargetFps (0: the cameras' rate) with bounded latency, trading detection for rate; Max: every
+    /// view detected, whatever the rate.</summary>
+    [Export] public LiveQuality Quality = LiveQuality.Governed;
+    [Export] public float TargetFps = 0;
     /// <summary>Auto: the GPU when the GPU build of ONNX Runtime and a GPU are there, else the CPU.</summary>
     [Export] public Device Device = Device.Auto;
     [Export] public NodePath[] Drivers = new NodePath[0];
@@ -25,7 +31,10 @@ public partial class OctocapLiveNode : Node
         _calibration = Calibration.Load(ProjectSettings.GlobalizePath(CalibrationPath));
         SessionConfig session = SessionConfig.Default;
         session.Layout = Layout.Coco17;
-        Live = new Live(LiveConfig.Default, session, _calibration, Cameras);
+        LiveConfig config = LiveConfig.Default;
+        config.Quality = Quality;
+        config.TargetFps = System.Math.Max(0f, TargetFps);
+        Live = new Live(config, session, _calibration, Cameras);
         DetectorConfig detector = DetectorConfig.Default;
         detector.SetModel(Model);
         detector.ViewsPerFrame = (uint)System.Math.Max(0, ViewsPerFrame);
