@@ -147,7 +147,7 @@ int solve(const SolveOptions& o) {
   size_t solved_keypoints = 0, frames_with_result = 0, frames_multi = 0;
   double solve_ms = 0, detect_ms = 0, read_ms = 0, inference_ms = 0, track_ms = 0;
   size_t inferences = 0, views_tracked = 0;
-  std::string detect_model, detect_runtime;
+  std::string detect_model;
   octocap_detect_mode_t detect_mode = OCTOCAP_DETECT_CROP;
   Accuracy acc;
   acc.per_keypoint_sum.assign(K, 0);
@@ -185,7 +185,6 @@ int solve(const SolveOptions& o) {
       inferences += dinfo.inferences;
       views_tracked += dinfo.views_tracked;
       detect_model = dinfo.model;
-      detect_runtime = dinfo.runtime_name;
       detect_mode = dinfo.mode;
       bool crowded = false;
       for (uint32_t v = 0; v < views; ++v) crowded = crowded || session.detections(v).size() > K;
@@ -269,14 +268,15 @@ int solve(const SolveOptions& o) {
   else
     std::printf("  reprojection error:   mean %.2f px, median %.2f px\n", mean_err, median(errors));
   std::printf("  3D solve time:        %.3f ms/frame; end to end (%s included) %.2f ms/frame, %.0f frames/s%s\n",
-              done ? solve_ms / done : 0.0, source ? "decoding and detection" : "JSON parsing", done ? total_ms / done : 0.0,
+              done ? solve_ms / done : 0.0, source ? "decoding and detection" : "JSON parsing",
+              done ? total_ms / done : 0.0,
               total_ms > 0 ? done * 1000.0 / total_ms : 0.0,
               o.out.publish || o.out.vmc_port ? " (paced at --rate for streaming)" : "");
   if (source)
-    std::printf("  2D detection:         %.1f ms/frame, model %s, mode %s (%s)\n",
+    std::printf("  2D detection:         %.1f ms/frame, model %s, mode %s (ONNX Runtime %s)\n",
                 done ? detect_ms / done : 0.0, detect_model.c_str(),
                 detect_mode == OCTOCAP_DETECT_PER_VIEW ? "per-view" : detect_mode == OCTOCAP_DETECT_MOSAIC ? "mosaic" : "crop",
-                detect_runtime.c_str());
+                octocap_onnxruntime_version());
   if (source && done)
     std::printf("  per frame:            decoding waited for %.1f ms (the next frame decodes during this one's "
                 "detection); %.2f inferences, %.1f ms in the network; %.2f views followed by optical flow, %.1f ms\n",
