@@ -2,7 +2,8 @@
 // views, per path (per view, mosaic, crop) and model, with 1 and 2 ONNX Runtime threads; then each path's accuracy
 // on the whole 4-camera take: keypoints solved, reprojection error, distance to Pose2Sim's own 3D.
 // `--end-to-end [LEVER]`: frames/s from the videos with decoding, per stage, per lever (model, views detected a frame),
-// for 1, 4 and 8 views. `--accuracy [PATH]`, `--crop-gap`: those tables alone.
+// for 1, 4 and 8 views. `--accuracy [PATH]`, `--crop-gap`: those tables alone. `--runtimes`: per inference back end
+// and precision, ms per inference alone and two at once per model, then the accuracy of the main paths in each.
 // Run after scripts/fetch-models.sh and scripts/fetch-real-videos.sh (scripts/test.sh fetches both).
 #include <algorithm>
 #include <chrono>
@@ -55,10 +56,16 @@ const Path kPaths[] = {{"per-view lightning", OCTOCAP_DETECT_PER_VIEW, "movenet-
 // Keypoints scored apart from the body: MoveNet has none of them.
 bool is_foot(const char* name) { return std::strstr(name, "Heel") || std::strstr(name, "Toe") || std::strstr(name, "FootIndex"); }
 
+// The back end every detector of a table runs in (--runtimes sets it per table; default: the library's choice).
+octocap_runtime_t g_runtime = OCTOCAP_RUNTIME_AUTO;
+octocap_precision_t g_precision = OCTOCAP_PRECISION_AUTO;
+
 // threads 0 with parallel views: each view's inference gets cores / parallel views.
 octocap_detector_config_t config_of(const Path& p, uint32_t threads) {
   octocap_detector_config_t c;
   octocap_detector_config_init(&c);
+  c.runtime = g_runtime;
+  c.precision = g_precision;
   std::snprintf(c.model, sizeof c.model, "%s", p.model);
   c.mode = p.mode;
   c.threads = p.parallel_views > 1 ? 0 : threads;
@@ -381,10 +388,76 @@ void end_to_end(const std::string& only) {
   octocap_calibration_destroy(four);
 }
 
+// Per back end and precision: one inference's cost (the crop path on one view, one thread), and two views' at once
+// (two threads, each view on its own: the memory bandwidth they share shows), per model; then the accuracy table's
+// main paths in each, so that a faster arithmetic is judged by the 3D it gives.
+void runtimes(const std::vector<std::vector<cv::Mat>>& frames) {
+  struct Backend {
+    const char* name;
+    octocap_runtime_t runtime;
+    octocap_precision_t precision;
+  };
+  const Backend backends[] = {{"ONNX Runtime f32", OCTOCAP_RUNTIME_ONNXRUNTIME, OCTOCAP_PRECISION_F32},
+                              {"OpenVINO f32", OCTOCAP_RUNTIME_OPENVINO, OCTOCAP_PRECISION_F32},
+                              {"OpenVINO reduced", OCTOCAP_RUNTIME_OPENVINO, OCTOCAP_PRECISION_REDUCED}};
+  const char* models[] = {"movenet-thunder", "movenet-lightning", "movenet-thunder-int8", "blazepose-full",
+                          "blazepose-lite"};
+  std::printf("\n## Inference back ends: ms per inference, crop path, real 1088x1920 frames, this machine\n\n");
+  std::printf("| back end | model | precision run | 1 view, 1 thread | 2 views at once, each |\n|---|---|---|---|---|\n");
+  for (const Backend& b : backends)
+    for (const char* model : models) {
+      g_runtime = b.runtime;
+      g_precision = b.precision;
+      std::printf("| %s | %s |", b.name, model);
+      const char* ran = "-";
+      for (uint32_t views : {1u, 2u}) {
+        const octocap_detector_config_t cfg = config_of({model, OCTOCAP_DETECT_CROP, model, views}, 1);
+        octocap_detector_t* d = nullptr;
+        if (octocap_detector_create(&cfg, &d) != OCTOCAP_OK) {
+          std::printf(" %s | %s |", ran, octocap_last_error());
+          break;
+        }
+        std::vector<double> per_inference;
+        for (size_t f = 0; f < frames.size(); ++f) {
+          const auto v = views_of(frames[f], views);
+          octocap_detector_run(d, v.data(), views);
+          octocap_detect_info_t info{};
+          info.struct_size = sizeof info;
+          octocap_detector_info(d, &info);
+          ran = info.precision == OCTOCAP_PRECISION_REDUCED ? "bf16" : "f32";
+          // Wall time of the frame: views at once overlap, so each view's inference costs the frame's time.
+          if (f >= 2 && info.inferences) per_inference.push_back(info.total_ms * views / info.inferences);
+        }
+        if (views == 1) std::printf(" %s |", ran);
+        std::printf(" %.1f |", median(per_inference));
+        octocap_detector_destroy(d);
+      }
+      std::printf("\n");
+      std::fflush(stdout);
+    }
+  for (const Backend& b : backends) {
+    g_runtime = b.runtime;
+    g_precision = b.precision;
+    std::printf("\n### %s\n", b.name);
+    accuracy("crop thunder, 2 views at once");
+    accuracy("crop lightning, 2 views at once");
+    accuracy("crop blazepose full");
+  }
+  g_runtime = OCTOCAP_RUNTIME_AUTO;
+  g_precision = OCTOCAP_PRECISION_AUTO;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::printf("# octocap 2D detection benchmark (ONNX Runtime %s)\n", octocap_onnxruntime_version());
+  std::printf("# octocap 2D detection benchmark (ONNX Runtime %s, OpenVINO %s)\n", octocap_onnxruntime_version(),
+              *octocap_openvino_version() ? octocap_openvino_version() : "not built in");
+  if (argc > 1 && std::string(argv[1]) == "--runtimes") {  // that table alone
+    const auto frames = read_frames(12);
+    if (frames.empty()) return 1;
+    runtimes(frames);
+    return 0;
+  }
   if (argc > 1 && std::string(argv[1]) == "--crop-gap") {  // that table alone
     crop_gap();
     return 0;

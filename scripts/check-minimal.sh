@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The smallest configuration (no DDS, no ONNX Runtime, no viewer) builds, and its command line solves the built-in
+# The smallest configuration (no DDS, no ONNX Runtime or OpenVINO, no viewer) builds, and its command line solves the built-in
 # sample and refuses what this build cannot do with a clear message. Unoptimised, without tests: what it checks is
 # that the optional parts stay optional (every #ifdef branch compiles and links); the full test suite runs elsewhere.
 set -euo pipefail
@@ -9,7 +9,7 @@ bash "$ROOT/scripts/fetch-real-data.sh"    # the real take, for the images check
 bash "$ROOT/scripts/fetch-real-videos.sh"
 if [ ! -f "$DIR/build.ninja" ]; then
   cmake -S "$ROOT" -B "$DIR" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-O0 -DCMAKE_C_FLAGS_DEBUG=-O0 \
-    -DOCTOCAP_WITH_DDS=OFF -DOCTOCAP_WITH_ONNX=OFF -DOCTOCAP_WITH_VIEWER=OFF -DOCTOCAP_TESTS=OFF -DOCTOCAP_UNITY=OFF \
+    -DOCTOCAP_WITH_DDS=OFF -DOCTOCAP_WITH_ONNX=OFF -DOCTOCAP_WITH_OPENVINO=OFF -DOCTOCAP_WITH_VIEWER=OFF -DOCTOCAP_TESTS=OFF -DOCTOCAP_UNITY=OFF \
     -DOCTOCAP_BENCH=OFF >/dev/null
 fi
 cmake --build "$DIR" -j "$JOBS" --target octocap_cli

@@ -6,7 +6,7 @@ JOBS="${OCTOCAP_JOBS:-$(nproc)}"
 ensure_deps() {
   local missing=0
   for pkg in cmake ninja-build libeigen3-dev libtomlplusplus-dev nlohmann-json3-dev libcli11-dev \
-             libcatch2-dev libopencv-calib3d-dev libopencv-imgcodecs-dev libopencv-contrib-dev libopencv-videoio-dev libopencv-video-dev libcurl4-openssl-dev libturbojpeg0-dev libceres-dev assimp-testmodels python3-pip python3-venv mono-devel \
+             libcatch2-dev libopencv-calib3d-dev libopencv-imgcodecs-dev libopencv-contrib-dev libopencv-videoio-dev libopencv-video-dev libcurl4-openssl-dev libturbojpeg0-dev libceres-dev libtbb12 assimp-testmodels python3-pip python3-venv mono-devel \
              nunit-console libnunit-cil-dev cyclonedds-dev cyclonedds-tools liblo-dev \
              libassimp-dev libosmesa6-dev libglfw3-dev xvfb ffmpeg clang-14 gir1.2-gst-rtsp-server-1.0 python3-gi \
              gstreamer1.0-plugins-good gstreamer1.0-plugins-bad; do
@@ -14,6 +14,7 @@ ensure_deps() {
   done
   command -v npm >/dev/null 2>&1 || missing=1
   ls "$ROOT"/.cache/onnxruntime/.complete-*1.31.1 >/dev/null 2>&1 || missing=1  # the CPU or the GPU (--gpu) runtime
+  [ -f "$ROOT/.cache/openvino/.complete-2026.4.0-systbb" ] || missing=1
   if [ "$missing" = 1 ]; then
     echo "== installing dependencies (scripts/install-deps.sh)" >&2
     bash "$ROOT/scripts/install-deps.sh"

@@ -23,7 +23,7 @@ $SUDO apt-get install -y -q --no-install-recommends \
   libopencv-core-dev libopencv-calib3d-dev libopencv-imgproc-dev libopencv-imgcodecs-dev libopencv-contrib-dev \
   libopencv-videoio-dev libopencv-video-dev \
   libcurl4-openssl-dev libturbojpeg0-dev \
-  libceres-dev \
+  libceres-dev libtbb12 \
   assimp-testmodels python3 python3-pip python3-venv \
   mono-devel nunit-console libnunit-cil-dev \
   cyclonedds-dev cyclonedds-tools liblo-dev \
@@ -39,3 +39,5 @@ fi
 # ONNX Runtime is not packaged for Debian 12: library from PyPI, headers from Debian trixie (see the script).
 # --gpu: its GPU build with the CUDA and cuDNN libraries it needs (about 2 GB; NVIDIA driver required).
 bash "$(dirname "$0")/fetch-onnxruntime.sh" ${OCTOCAP_GPU:+--gpu}
+# OpenVINO, the faster CPU back end (scripts/fetch-openvino.sh: PyPI wheel, Apache-2.0).
+bash "$(dirname "$0")/fetch-openvino.sh"

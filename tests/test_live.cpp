@@ -532,7 +532,8 @@ TEST_CASE("live: a network camera killed mid-run is reconnected while the other 
     INFO(r.output);
     REQUIRE(r.status == 0);
   }
-  const int base_port = 20000 + static_cast<int>(getpid() % 20000);
+  const int base_port = testing::free_port_run(2);
+  REQUIRE(base_port > 0);
   auto serve = [&](size_t c) {
     const std::string url = "http://127.0.0.1:" + std::to_string(base_port + static_cast<int>(c)) + "/cam.mjpg";
     return std::make_unique<testing::ChildProcess>(std::vector<std::string>{

@@ -32,7 +32,8 @@ const std::string kServer = std::string(OCTOCAP_SOURCE_DIR) + "/tests/support/rt
 TEST_CASE("capture nodes: two node processes publish keypoints, a hub solves them; a node killed and restarted",
           "[live][nodes][dds][real][serial]") {
   const uint32_t domain = loopback_dds_domain();  // the children inherit the loopback configuration
-  const int base_port = 45000 + static_cast<int>(getpid() % 4000) * 4;
+  const int base_port = free_port_run(4);
+  REQUIRE(base_port > 0);
   auto url = [&](int c) { return "rtsp://127.0.0.1:" + std::to_string(base_port + c) + "/cam"; };
   std::vector<std::unique_ptr<ChildProcess>> servers;
   for (int c = 0; c < 4; ++c)

@@ -90,7 +90,8 @@ TEST_CASE("live: four RTSP cameras on loopback solve as offline; one killed and 
           "[live][rtsp][real][serial]") {
   REQUIRE(fs::exists("/usr/bin/python3"));  // Debian's, with python3-gi (scripts/install-deps.sh)
   for (int c = 0; c < 4; ++c) REQUIRE(fs::exists(stream_file(c)));
-  const int base_port = 40000 + static_cast<int>(getpid() % 5000) * 4;
+  const int base_port = free_port_run(4);
+  REQUIRE(base_port > 0);
   auto url = [&](int c) { return "rtsp://127.0.0.1:" + std::to_string(base_port + c) + "/cam"; };
   auto serve = [&](int c) {
     return std::make_unique<ChildProcess>(std::vector<std::string>{

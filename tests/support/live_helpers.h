@@ -81,6 +81,31 @@ inline bool port_accepts(int port, int timeout_ms) {
   }, timeout_ms);
 }
 
+// `count` consecutive TCP ports a test's servers can listen on: below Linux's ephemeral range (32768-60999), where
+// the kernel hands out the client ends of every connection on the machine (a port chosen in it was sometimes taken by
+// the time a server bound it), spread by process id so parallel runs differ, and each checked free by binding it.
+inline int free_port_run(int count) {
+  auto bindable = [](int port) {
+    const int fd = socket(AF_INET, SOCK_STREAM, 0);
+    if (fd < 0) return false;
+    sockaddr_in addr{};
+    addr.sin_family = AF_INET;
+    addr.sin_port = htons(static_cast<uint16_t>(port));
+    addr.sin_addr.s_addr = htonl(INADDR_ANY);
+    const bool ok = bind(fd, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) == 0;
+    close(fd);
+    return ok;
+  };
+  constexpr int kLow = 12000, kSlots = (32768 - kLow) / 8;
+  for (int attempt = 0; attempt < kSlots; ++attempt) {
+    const int base = kLow + static_cast<int>((getpid() + attempt) % kSlots) * 8;
+    bool all = true;
+    for (int p = base; p < base + count && all; ++p) all = bindable(p);
+    if (all) return base;
+  }
+  return 0;
+}
+
 // Takes up to `attempts` frames (2 s each) until `wanted` of them show the person in exactly `views` views; returns
 // how many did.
 template <class Live>

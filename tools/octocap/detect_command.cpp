@@ -80,9 +80,8 @@ int detect(const DetectOptions& o) {
       std::fprintf(stderr, "\r  frame %zu / %zu", f + 1, frames);
   }
   if (!o.quiet && frames >= 20) std::fprintf(stderr, "\n");
-  std::printf("octocap detect: %zu frames x %zu cameras, model %s (%s), mode %s, ONNX Runtime %s\n", frames,
-              names.size(), info.model, octocap_layout_name(info.layout), o.detector.mode.c_str(),
-              octocap_onnxruntime_version());
+  std::printf("octocap detect: %zu frames x %zu cameras, model %s (%s), mode %s, %s\n", frames, names.size(),
+              info.model, octocap_layout_name(info.layout), o.detector.mode.c_str(), runtime_description(info).c_str());
   std::printf("  views with a person:  %zu / %zu\n", found, frames * names.size());
   std::printf("  detection time:       %.1f ms/frame (inference %.1f ms), %.1f frames/s\n",
               frames ? total_ms / frames : 0.0, frames ? inference_ms / frames : 0.0,
@@ -109,7 +108,20 @@ octocap_detector_config_t DetectorOptions::config() const {
   c.parallel_views = parallel_views;
   c.views_per_frame = views_per_frame;
   c.device = device == "cuda" ? OCTOCAP_DEVICE_CUDA : device == "auto" ? OCTOCAP_DEVICE_AUTO : OCTOCAP_DEVICE_CPU;
+  c.runtime = runtime == "openvino" ? OCTOCAP_RUNTIME_OPENVINO : runtime == "onnxruntime" ? OCTOCAP_RUNTIME_ONNXRUNTIME
+                                                                                          : OCTOCAP_RUNTIME_AUTO;
+  c.precision = precision == "f32" ? OCTOCAP_PRECISION_F32 : precision == "reduced" ? OCTOCAP_PRECISION_REDUCED
+                                                                                    : OCTOCAP_PRECISION_AUTO;
   return c;
+}
+
+std::string runtime_description(const octocap_detect_info_t& info) {
+  const bool ov = info.runtime == OCTOCAP_RUNTIME_OPENVINO;
+  std::string s = ov ? std::string("OpenVINO ") + octocap_openvino_version()
+                     : std::string("ONNX Runtime ") + octocap_onnxruntime_version();
+  s += info.precision == OCTOCAP_PRECISION_REDUCED ? " (bf16" : " (f32";
+  s += info.device == OCTOCAP_DEVICE_CUDA ? ", GPU)" : ")";
+  return s;
 }
 
 octocap_image_t as_image(const cv::Mat& bgr) {

@@ -16,8 +16,13 @@ struct DetectorOptions {
   unsigned parallel_views = 0;
   unsigned views_per_frame = 0;
   std::string device = "cpu";
+  std::string runtime = "auto";
+  std::string precision = "auto";
   octocap_detector_config_t config() const;
 };
+
+// "OpenVINO 2026.4.0 (bf16)", "ONNX Runtime 1.31.1 (f32)": the back end a detection ran in, for the figures printed.
+std::string runtime_description(const octocap_detect_info_t& info);
 
 struct DetectOptions {
   std::string images, output, debug_images;

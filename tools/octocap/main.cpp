@@ -15,11 +15,13 @@ void add_detector_options(CLI::App* app, DetectorOptions& d) {
   app->add_option("--model", d.model, "Pose model: a shipped name (movenet-thunder, movenet-lightning, movenet-multipose) or an .onnx with its card")->capture_default_str();
   app->add_option("--detect-mode", d.mode, "per-view, mosaic (the paper's merged image) or crop (around the last pose)")->check(CLI::IsMember({"per-view", "mosaic", "crop"}))->capture_default_str();
   app->add_option("--pick", d.pick, "People per view passed on: all, largest, most-confident, nearest")->check(CLI::IsMember({"all", "largest", "most-confident", "nearest"}))->capture_default_str();
-  app->add_option("--detect-threads", d.threads, "ONNX Runtime intra-op threads (0: all cores)")->capture_default_str();
+  app->add_option("--detect-threads", d.threads, "Inference threads per view (0: all cores, shared by parallel views)")->capture_default_str();
   app->add_option("--mosaic-tile", d.mosaic_tile, "Mosaic: tile height in pixels")->capture_default_str();
   app->add_option("--max-people", d.max_people, "People kept per view")->check(CLI::Range(1, 64))->capture_default_str();
   app->add_option("--parallel-views", d.parallel_views, "Views inferred at once (0: one per core)")->check(CLI::Range(0, 256))->capture_default_str();
   app->add_option("--views-per-frame", d.views_per_frame, "Views detected each frame, the others followed by optical flow (0: every view; README \"Real time\")")->check(CLI::Range(0, 256))->capture_default_str();
+  app->add_option("--runtime", d.runtime, "Inference back end: auto (OpenVINO on the CPU where built in, else ONNX Runtime), onnxruntime or openvino")->check(CLI::IsMember({"auto", "onnxruntime", "openvino"}))->capture_default_str();
+  app->add_option("--precision", d.precision, "Network arithmetic: auto (bf16 where this CPU has it natively and the back end can, else f32), f32 or reduced (bf16; OpenVINO)")->check(CLI::IsMember({"auto", "f32", "reduced"}))->capture_default_str();
   app->add_option("--device", d.device, "Where the network runs: cpu, auto (the GPU when there is one, else the CPU) or cuda (the GPU or an error)")->check(CLI::IsMember({"cpu", "auto", "cuda"}))->capture_default_str();
 }
 

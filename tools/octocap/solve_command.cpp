@@ -149,6 +149,7 @@ int solve(const SolveOptions& o) {
   size_t inferences = 0, views_tracked = 0;
   std::string detect_model;
   octocap_detect_mode_t detect_mode = OCTOCAP_DETECT_CROP;
+  std::string detect_runtime;
   Accuracy acc;
   acc.per_keypoint_sum.assign(K, 0);
   acc.per_keypoint_n.assign(K, 0);
@@ -186,6 +187,7 @@ int solve(const SolveOptions& o) {
       views_tracked += dinfo.views_tracked;
       detect_model = dinfo.model;
       detect_mode = dinfo.mode;
+      detect_runtime = runtime_description(dinfo);
       bool crowded = false;
       for (uint32_t v = 0; v < views; ++v) crowded = crowded || session.detections(v).size() > K;
       frames_multi += crowded;
@@ -273,10 +275,10 @@ int solve(const SolveOptions& o) {
               total_ms > 0 ? done * 1000.0 / total_ms : 0.0,
               o.out.publish || o.out.vmc_port ? " (paced at --rate for streaming)" : "");
   if (source)
-    std::printf("  2D detection:         %.1f ms/frame, model %s, mode %s (ONNX Runtime %s)\n",
+    std::printf("  2D detection:         %.1f ms/frame, model %s, mode %s (%s)\n",
                 done ? detect_ms / done : 0.0, detect_model.c_str(),
                 detect_mode == OCTOCAP_DETECT_PER_VIEW ? "per-view" : detect_mode == OCTOCAP_DETECT_MOSAIC ? "mosaic" : "crop",
-                octocap_onnxruntime_version());
+                detect_runtime.c_str());
   if (source && done)
     std::printf("  per frame:            decoding waited for %.1f ms (the next frame decodes during this one's "
                 "detection); %.2f inferences, %.1f ms in the network; %.2f views followed by optical flow, %.1f ms\n",

@@ -57,6 +57,10 @@ namespace Octocap
     public enum DetectMode : int { PerView = 0, Mosaic = 1, Crop = 2 }
     /// <summary>Where the detector's network runs (octocap_device_t, 1.5).</summary>
     public enum Device : int { Cpu = 0, Auto = 1, Cuda = 2 }
+    /// <summary>(1.9) The inference back end: Auto is OpenVINO on the CPU where the library has it, else ONNX Runtime.</summary>
+    public enum Runtime : int { Auto = 0, OnnxRuntime = 1, OpenVino = 2 }
+    /// <summary>(1.9) The network's arithmetic: Auto (bf16 where the CPU has it natively and the back end can), F32, Reduced.</summary>
+    public enum Precision : int { Auto = 0, F32 = 1, Reduced = 2 }
     public enum PersonPick : int { All = 0, Largest = 1, MostConfident = 2, NearestPrevious = 3 }
 
     /// <summary>The skeleton joints (octocap_joint_id_t): the paper's 14 and a root, then toes, heels and knuckles (1.4).</summary>
@@ -248,6 +252,10 @@ namespace Octocap
         public uint ViewsPerFrame;
         /// <summary>(1.5) Cpu (default), Auto (the GPU when there is one) or Cuda (the GPU or an error).</summary>
         public Device Device;
+        /// <summary>(1.9) The inference back end (default Auto).</summary>
+        public Runtime Runtime;
+        /// <summary>(1.9) Its arithmetic (default Auto).</summary>
+        public Precision Precision;
 
         /// <summary>A shipped model's name ("movenet-thunder") or an .onnx path; null or "" for the mode's default.</summary>
         public void SetModel(string model)
@@ -294,6 +302,8 @@ namespace Octocap
         public uint ViewsTracked;
         public float TrackMs;
         public Device Device;
+        public Runtime Runtime;
+        public Precision Precision;
     }
 
     /// <summary>octocap_subscriber_config_t. Start from <see cref="SubscriberConfig.Default"/>.</summary>
@@ -485,6 +495,7 @@ namespace Octocap
         [DllImport(Lib)] internal static extern Result octocap_session_detections(SessionHandle s, uint view, Keypoint2D* output, uint capacity, out uint count);
         [DllImport(Lib)] internal static extern Result octocap_session_detect_info(SessionHandle s, ref DetectInfo info);
         [DllImport(Lib)] internal static extern IntPtr octocap_onnxruntime_version();
+        [DllImport(Lib)] internal static extern IntPtr octocap_openvino_version();
         [DllImport(Lib)] internal static extern Result octocap_session_reset(SessionHandle s);
         [DllImport(Lib)] internal static extern Result octocap_session_flush_stream(SessionHandle s);
         [DllImport(Lib)] internal static extern Result octocap_session_stream_subscribers(SessionHandle s, out uint count);

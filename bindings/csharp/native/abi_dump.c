@@ -55,7 +55,8 @@ static void layout(void) {
   FIELD(octocap_detector_config_t, threads); FIELD(octocap_detector_config_t, mosaic_tile_px);
   FIELD(octocap_detector_config_t, max_people); FIELD(octocap_detector_config_t, min_confidence);
   FIELD(octocap_detector_config_t, parallel_views); FIELD(octocap_detector_config_t, views_per_frame);
-  FIELD(octocap_detector_config_t, device);
+  FIELD(octocap_detector_config_t, device); FIELD(octocap_detector_config_t, runtime);
+  FIELD(octocap_detector_config_t, precision);
   SIZE(octocap_image_t);
   FIELD(octocap_image_t, pixels); FIELD(octocap_image_t, width); FIELD(octocap_image_t, height);
   FIELD(octocap_image_t, stride_bytes); FIELD(octocap_image_t, format);
@@ -66,6 +67,7 @@ static void layout(void) {
   FIELD(octocap_detect_info_t, keypoint_count); FIELD(octocap_detect_info_t, model);
   FIELD(octocap_detect_info_t, mode); FIELD(octocap_detect_info_t, views_tracked);
   FIELD(octocap_detect_info_t, track_ms); FIELD(octocap_detect_info_t, device);
+  FIELD(octocap_detect_info_t, runtime); FIELD(octocap_detect_info_t, precision);
   SIZE(octocap_subscriber_config_t);
   FIELD(octocap_subscriber_config_t, struct_size); FIELD(octocap_subscriber_config_t, domain_id);
   FIELD(octocap_subscriber_config_t, qos); FIELD(octocap_subscriber_config_t, history_depth);

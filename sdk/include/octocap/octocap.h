@@ -83,7 +83,7 @@ extern "C" {
 
 /** Version of this header. The library's own is octocap_version_number(). */
 #define OCTOCAP_VERSION_MAJOR 1
-#define OCTOCAP_VERSION_MINOR 8
+#define OCTOCAP_VERSION_MINOR 9
 #define OCTOCAP_VERSION_PATCH 0
 /** MAJOR * 10000 + MINOR * 100 + PATCH: 10000 for 1.0.0. */
 #define OCTOCAP_VERSION_NUMBER (OCTOCAP_VERSION_MAJOR * 10000 + OCTOCAP_VERSION_MINOR * 100 + OCTOCAP_VERSION_PATCH)
@@ -487,6 +487,32 @@ enum octocap_device_values {
                                 `scripts/install-deps.sh --gpu`; CUDA libraries; a GPU). */
 };
 
+/** (1.9) The inference back end that runs the detector's network. Both read the same .onnx and its model card. */
+typedef int32_t octocap_runtime_t;
+/** Values of ::octocap_runtime_t. */
+enum octocap_runtime_values {
+  OCTOCAP_RUNTIME_AUTO = 0,        /**< OpenVINO on the CPU where the build has it (the faster of the two there, at
+                                        the same keypoints: README "Inference back ends"); ONNX Runtime on a GPU, for
+                                        a quantised model (its card's "quantized": calibrated for ONNX Runtime's
+                                        integer kernels) or where the build has no OpenVINO. */
+  OCTOCAP_RUNTIME_ONNXRUNTIME = 1, /**< ONNX Runtime (CPU, or an NVIDIA GPU with the device setting). */
+  OCTOCAP_RUNTIME_OPENVINO = 2     /**< OpenVINO's CPU plugin; ::OCTOCAP_ERROR_UNSUPPORTED in a build without it or
+                                        with a GPU device. */
+};
+
+/** (1.9) The arithmetic the network runs in. */
+typedef int32_t octocap_precision_t;
+/** Values of ::octocap_precision_t. */
+enum octocap_precision_values {
+  OCTOCAP_PRECISION_AUTO = 0,    /**< f32 today, in both back ends (bf16 was measured to move keypoints; README
+                                      "Inference back ends"). */
+  OCTOCAP_PRECISION_F32 = 1,     /**< 32-bit floats everywhere: the model's own numbers. */
+  OCTOCAP_PRECISION_REDUCED = 2  /**< bf16 where the CPU has it natively (AVX-512 BF16, AMX; elsewhere OpenVINO keeps
+                                      f32 and octocap_detect_info_t.precision says so). OpenVINO only
+                                      (::OCTOCAP_ERROR_UNSUPPORTED with ONNX Runtime). About twice as fast; confident
+                                      keypoints within about 1 % of the picture of f32's, weak ones may be lost. */
+};
+
 /** Detector configuration. Fill with octocap_detector_config_init() first. */
 typedef struct octocap_detector_config_t {
   uint32_t struct_size;            /**< sizeof(octocap_detector_config_t). */
@@ -498,7 +524,7 @@ typedef struct octocap_detector_config_t {
   octocap_detect_mode_t mode;      /**< Default ::OCTOCAP_DETECT_CROP (of the three, the one that
                                       finds the most keypoints and solves closest to a reference 3D). */
   octocap_person_pick_t person_pick; /**< Default ::OCTOCAP_PICK_ALL. */
-  uint32_t threads;                /**< ONNX Runtime intra-op threads; 0 = all cores. Default 0. */
+  uint32_t threads;                /**< Inference threads per view; 0 = all cores (shared by parallel views). Default 0. */
   uint32_t mosaic_tile_px;         /**< Mosaic: height of each view's tile (the width follows the views' aspect). Default 256. */
   uint32_t max_people;             /**< People kept per view with ::OCTOCAP_PICK_ALL. Default 4. */
   float min_confidence;            /**< Keypoints below it do not place a person in a mosaic tile or a crop. Default 0.3. */
@@ -514,6 +540,9 @@ typedef struct octocap_detector_config_t {
                                         value measures. */
   octocap_device_t device;         /**< Where the network runs: ::OCTOCAP_DEVICE_CPU (default), ::OCTOCAP_DEVICE_AUTO or
                                         ::OCTOCAP_DEVICE_CUDA. */
+  /* 1.9 */
+  octocap_runtime_t runtime;       /**< The inference back end. Default ::OCTOCAP_RUNTIME_AUTO. */
+  octocap_precision_t precision;   /**< Its arithmetic. Default ::OCTOCAP_PRECISION_AUTO. */
 } octocap_detector_config_t;
 
 /** Fills the first `struct_size` bytes of `cfg` with defaults and sets its struct_size: ::OCTOCAP_ERROR_STRUCT_SIZE
@@ -529,7 +558,7 @@ typedef struct octocap_detect_info_t {
   uint32_t struct_size;       /**< Set by the caller to sizeof(octocap_detect_info_t). */
   float total_ms;             /**< Whole detection of the frame (all views). */
   float preprocess_ms;        /**< Resizing, letterboxing, tiling. */
-  float inference_ms;         /**< Inside ONNX Runtime. */
+  float inference_ms;         /**< Inside the inference back end. */
   uint32_t inferences;        /**< Network runs for the frame (1 for the mosaic, N per view, up to 2N for crops). */
   octocap_layout_t layout;    /**< The model's keypoint layout. */
   uint32_t keypoint_count;    /**< Keypoints per person. */
@@ -542,6 +571,9 @@ typedef struct octocap_detect_info_t {
   uint32_t views_tracked;      /**< Views followed by optical flow instead of detected (views_per_frame). */
   float track_ms;              /**< Optical flow: preparing every view's picture, following the tracked views. */
   octocap_device_t device;     /**< Where the network ran: ::OCTOCAP_DEVICE_CPU or ::OCTOCAP_DEVICE_CUDA. */
+  /* 1.9 */
+  octocap_runtime_t runtime;     /**< The back end that ran it: ::OCTOCAP_RUNTIME_ONNXRUNTIME or ::OCTOCAP_RUNTIME_OPENVINO. */
+  octocap_precision_t precision; /**< Its arithmetic: ::OCTOCAP_PRECISION_F32 or ::OCTOCAP_PRECISION_REDUCED. */
 } octocap_detect_info_t;
 
 /** A 2D detector on its own (no calibration): what `octocap detect` uses to write OpenPose JSON. */
@@ -574,6 +606,9 @@ OCTOCAP_API octocap_result_t octocap_model_layout(const char* model, octocap_lay
 /** Version of the ONNX Runtime library in use ("1.32.0"), or "" when this build has none (or the library is
  *  older than octocap's headers). The string stays valid until the next call on the same thread. */
 OCTOCAP_API const char* octocap_onnxruntime_version(void);
+/** (1.9) Version of the OpenVINO library in use ("2026.4.0-..."), or "" when this build has none. The string stays
+ *  valid until the next call on the same thread. */
+OCTOCAP_API const char* octocap_openvino_version(void);
 
 /** @} */
 /* ------------------------------------------------------------------------------------------------------ */

@@ -8,6 +8,7 @@
 #include "capi/handles.h"
 #include "capi/struct_versions.h"
 #include "detect/ort_model.h"
+#include "detect/ov_model.h"
 
 using namespace octocap;
 
@@ -42,6 +43,12 @@ DetectorConfig detector_config(const octocap_detector_config_t& given) {
   if (c.device != OCTOCAP_DEVICE_CPU && c.device != OCTOCAP_DEVICE_AUTO && c.device != OCTOCAP_DEVICE_CUDA)
     throw Error(Errc::invalid_argument, "detector device " + std::to_string(c.device) + " is not a known device");
   d.device = static_cast<Device>(c.device);
+  if (c.runtime < OCTOCAP_RUNTIME_AUTO || c.runtime > OCTOCAP_RUNTIME_OPENVINO)
+    throw Error(Errc::invalid_argument, "detector runtime " + std::to_string(c.runtime) + " is not a known runtime");
+  d.runtime = static_cast<Runtime>(c.runtime);
+  if (c.precision < OCTOCAP_PRECISION_AUTO || c.precision > OCTOCAP_PRECISION_REDUCED)
+    throw Error(Errc::invalid_argument, "detector precision " + std::to_string(c.precision) + " is not a known precision");
+  d.precision = static_cast<Precision>(c.precision);
   return d;
 }
 
@@ -64,10 +71,13 @@ std::vector<ImageView> image_views(const octocap_image_t* images, uint32_t count
 
 void fill_detect_info(const Detector& detector, octocap_detect_info_t* out) {
   require(out, "out");
-  // 1.2 callers' struct ends before `mode`, 1.3 and 1.4 callers' before `views_tracked`.
+  // 1.2 callers' struct ends before `mode`, 1.3 and 1.4 callers' before `views_tracked`, 1.5-1.8 callers' before
+  // `runtime`.
   const uint32_t size12 = static_cast<uint32_t>(offsetof(octocap_detect_info_t, mode));
   const uint32_t size14 = static_cast<uint32_t>(offsetof(octocap_detect_info_t, views_tracked));
-  if (out->struct_size != sizeof(octocap_detect_info_t) && out->struct_size != size12 && out->struct_size != size14)
+  const uint32_t size18 = static_cast<uint32_t>(offsetof(octocap_detect_info_t, runtime));
+  if (out->struct_size != sizeof(octocap_detect_info_t) && out->struct_size != size12 && out->struct_size != size14 &&
+      out->struct_size != size18)
     throw Error(Errc::struct_size, "octocap_detect_info_t.struct_size must be " + std::to_string(sizeof(octocap_detect_info_t)));
   const DetectTimings& t = detector.timings();
   out->total_ms = static_cast<float>(t.total_ms);
@@ -78,10 +88,14 @@ void fill_detect_info(const Detector& detector, octocap_detect_info_t* out) {
   out->keypoint_count = static_cast<uint32_t>(layout(detector.card().layout).keypoints.size());
   copy_name(out->model, sizeof out->model, detector.card().name);
   if (out->struct_size >= size14) out->mode = static_cast<octocap_detect_mode_t>(detector.config().mode);
-  if (out->struct_size == sizeof(octocap_detect_info_t)) {
+  if (out->struct_size >= size18) {
     out->views_tracked = static_cast<uint32_t>(t.views_tracked);
     out->track_ms = static_cast<float>(t.track_ms);
     out->device = static_cast<octocap_device_t>(detector.device());
+  }
+  if (out->struct_size == sizeof(octocap_detect_info_t)) {
+    out->runtime = static_cast<octocap_runtime_t>(detector.runtime());
+    out->precision = static_cast<octocap_precision_t>(detector.precision());
   }
 }
 
@@ -119,6 +133,8 @@ octocap_result_t octocap_detector_config_defaults(octocap_detector_config_t* c, 
     d.parallel_views = 0;  // one view per core: every session has 2+ cameras (README "From images")
     d.views_per_frame = 0;
     d.device = OCTOCAP_DEVICE_CPU;  // a GPU only when asked: AUTO would load CUDA libraries a CPU user never needs
+    d.runtime = OCTOCAP_RUNTIME_AUTO;
+    d.precision = OCTOCAP_PRECISION_AUTO;
     capi::write_defaults(c, struct_size, d);
   });
 }
@@ -184,6 +200,16 @@ const char* octocap_onnxruntime_version(void) {
   static thread_local std::string version;
   try {
     version = onnxruntime_version();
+  } catch (...) {
+    version.clear();
+  }
+  return version.c_str();
+}
+
+const char* octocap_openvino_version(void) {
+  static thread_local std::string version;
+  try {
+    version = openvino_version();
   } catch (...) {
     version.clear();
   }

@@ -18,8 +18,9 @@ namespace octocap::capi {
 constexpr std::initializer_list<uint32_t> kSessionConfigSizes = {84, 152, 216, 760, 224};
 // The size of the 1.0 session config, which the 0.3 layout nests its detector config after.
 constexpr uint32_t kSessionConfigSize10 = 216;
-// octocap_detector_config_t: 0.3 (540), 0.3 parallel_views = 1.0 (544), 1.5 views_per_frame and device (552).
-constexpr std::initializer_list<uint32_t> kDetectorConfigSizes = {540, 544, 552};
+// octocap_detector_config_t: 0.3 (540), 0.3 parallel_views = 1.0 (544), 1.5 views_per_frame and device (552), 1.9
+// runtime and precision (560).
+constexpr std::initializer_list<uint32_t> kDetectorConfigSizes = {540, 544, 552, 560};
 // The size of the 1.0 detector config, which the 0.3 session config nests.
 constexpr uint32_t kDetectorConfigSize10 = 544;
 constexpr std::initializer_list<uint32_t> kSubscriberConfigSizes = {52};
@@ -41,7 +42,7 @@ static_assert(sizeof(octocap_session_config_t) == 224 && offsetof(octocap_sessio
               "1.3's session config is 1.0's and max_people: grow it only at its end");
 static_assert(offsetof(LegacySessionConfig03, detector) == 216 && sizeof(LegacySessionConfig03) == 760,
               "the 0.3 layout must stay byte-exact");
-static_assert(sizeof(octocap_detector_config_t) == 552 && sizeof(octocap_subscriber_config_t) == 52 &&
+static_assert(sizeof(octocap_detector_config_t) == 560 && sizeof(octocap_subscriber_config_t) == 52 &&
                   sizeof(octocap_extrinsics_options_t) == 36 && sizeof(octocap_live_config_t) == 76 &&
                   sizeof(octocap_node_config_t) == 92,
               "a config struct grew: add its new size to the tables above and to tests/abi");

@@ -18,7 +18,6 @@
 #include "core/layout.h"
 #include "core/log.h"
 #include "core/stats.h"
-#include "detect/ort_model.h"
 #include "detect/turned_crop.h"
 
 #ifndef OCTOCAP_DEFAULT_MODELS_DIR
@@ -162,7 +161,13 @@ Detector::Network Detector::load_network(const std::string& path) const {
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   // Views in parallel share the cores: each inference gets its part unless the caller chose.
   const int intra = config_.threads > 0 ? config_.threads : parallel_ > 1 ? std::max(1, cores / parallel_) : 0;
-  n.model = std::make_unique<OrtModel>(path, n.card, intra, config_.device != Device::cpu, config_.device == Device::cuda);
+  NetworkOptions options;
+  options.runtime = config_.runtime;
+  options.precision = config_.precision;
+  options.device = config_.device;
+  options.threads = intra;
+  options.callers = parallel_;
+  n.model = load_pose_network(path, n.card, options);
   // One run on a blank canvas: a card whose outputs do not fit its kind fails here, once, at load, instead of on
   // every frame of a live take that then solves nothing.
   const int w = n.card.dynamic_size ? round_to_multiple(n.card.input_width, n.card.size_multiple) : n.card.input_width;

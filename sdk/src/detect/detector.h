@@ -15,20 +15,17 @@
 #include "detect/model_card.h"
 #include "detect/mosaic.h"
 #include "detect/person_pick.h"
+#include "detect/pose_network.h"
 
 namespace octocap {
 
-class OrtModel;
-
 enum class DetectMode : int { per_view = 0, mosaic = 1, crop = 2 };
-// Where the network runs (octocap_device_t): auto is the GPU when there is one, else the CPU.
-enum class Device : int { cpu = 0, automatic = 1, cuda = 2 };
 
 struct DetectorConfig {
   std::string model;  // a path to a .onnx (its card beside it) or a shipped model's name; empty: the mode's default
   DetectMode mode = DetectMode::crop;
   PersonPick pick = PersonPick::all;
-  int threads = 0;           // ONNX Runtime intra-op threads; 0 = its default (all cores / parallel views)
+  int threads = 0;           // inference threads per view; 0 = the back end's default (all cores / parallel views)
   int parallel_views = 0;    // views inferred at once (per view and crop); 0 = as many as cores
   int mosaic_tile = 256;     // mosaic cell height in pixels (the width follows the views' aspect)
   size_t max_people = 4;     // per view, for PersonPick::all (and the crops of several people)
@@ -47,6 +44,9 @@ struct DetectorConfig {
   // Also load the model card's lighter model (its "lighter" key), for a caller that trades accuracy for time set by
   // set (the live engine's rate governor, use_network()). Per view and crop only.
   bool load_lighter = false;
+  // The inference back end and its arithmetic (detect/pose_network.h).
+  Runtime runtime = Runtime::automatic;
+  Precision precision = Precision::automatic;
 };
 
 struct DetectTimings {
@@ -94,6 +94,9 @@ class Detector {
   const DetectTimings& timings() const { return timings_; }
   // Where the network runs: cpu or cuda (automatic resolved when the model was loaded).
   Device device() const;
+  // The back end and precision the active network runs in (automatic resolved).
+  Runtime runtime() const { return model_->runtime(); }
+  Precision precision() const { return model_->precision(); }
 
  private:
   // The network on a prepared input (preparing it began at t0: the timings count it), in input pixels.
@@ -115,7 +118,7 @@ class Detector {
   struct Network {
     std::string path;
     ModelCard card;
-    std::unique_ptr<OrtModel> model;
+    std::unique_ptr<PoseNetwork> model;
   };
   // Reads the card beside `path`, loads the network and runs it once (Error(parse) when its outputs misfit the card).
   Network load_network(const std::string& path) const;
@@ -126,7 +129,7 @@ class Detector {
   // The active network's (use_network()).
   std::string path_;
   ModelCard card_;
-  OrtModel* model_ = nullptr;
+  PoseNetwork* model_ = nullptr;
   int parallel_ = 1;
   // The threads that detect views at once, made once: threads made per frame cost their start, and every new
   // thread OpenCV runs on keeps thread-local buffers it never frees (a live take grew 1.6 MB a minute).

@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "detect/network_input.h"
 
 #ifdef OCTOCAP_HAVE_ONNXRUNTIME
 // Manual init: the C++ wrapper otherwise asks for the API at static-initialisation time and crashes (null
@@ -196,47 +197,22 @@ OrtModel::OrtModel(const std::string& path, const ModelCard& card, int intra_thr
 OrtModel::~OrtModel() = default;
 
 std::vector<Tensor> OrtModel::run(const RgbCanvas& canvas) {
+  // Per call, not per model: views may run on several threads at once (Ort::Session::Run is thread-safe).
+  InputTensor tensor = fill_input(card_, canvas);
+  const std::vector<int64_t> shape = input_shape(card_, canvas);
   const int W = canvas.width, H = canvas.height;
-  const bool size_ok = card_.dynamic_size
-                           ? (W % card_.size_multiple == 0 && H % card_.size_multiple == 0)
-                           : (W == card_.input_width && H == card_.input_height);
-  if (!size_ok)
-    throw Error(Errc::invalid_argument, "network input " + std::to_string(W) + "x" + std::to_string(H) +
-                                            " does not suit model " + card_.name);
   const size_t n = static_cast<size_t>(W) * H * 3;
-  const std::vector<int64_t> shape = card_.nchw ? std::vector<int64_t>{1, 3, H, W} : std::vector<int64_t>{1, H, W, 3};
-  // Element i of the tensor from canvas pixel p, channel c (after the card's channel order and normalisation).
-  auto fill = [&](auto& buffer) {
-    buffer.resize(n);
-    const uint8_t* px = canvas.pixels.data();
-    const size_t plane = static_cast<size_t>(W) * H;
-    for (size_t p = 0; p < plane; ++p)
-      for (int c = 0; c < 3; ++c) {
-        const int source = card_.bgr ? 2 - c : c;
-        const float v = (px[p * 3 + source] - card_.mean[c]) * card_.scale[c];
-        const size_t at = card_.nchw ? c * plane + p : p * 3 + c;
-        using T = typename std::decay_t<decltype(buffer)>::value_type;
-        buffer[at] = std::is_integral_v<T> ? static_cast<T>(std::lround(v)) : static_cast<T>(v);
-      }
-  };
   Ort::MemoryInfo memory = Ort::MemoryInfo::CreateCpu(OrtArenaAllocator, OrtMemTypeDefault);
   Ort::Value input{nullptr};
-  // Per call, not per model: views may run on several threads at once (Ort::Session::Run is thread-safe).
-  std::vector<int32_t> i32;
-  std::vector<uint8_t> u8;
-  std::vector<float> f32;
   switch (card_.element) {
     case ElementType::int32:
-      fill(i32);
-      input = Ort::Value::CreateTensor<int32_t>(memory, i32.data(), n, shape.data(), shape.size());
+      input = Ort::Value::CreateTensor<int32_t>(memory, tensor.i32.data(), n, shape.data(), shape.size());
       break;
     case ElementType::uint8:
-      fill(u8);
-      input = Ort::Value::CreateTensor<uint8_t>(memory, u8.data(), n, shape.data(), shape.size());
+      input = Ort::Value::CreateTensor<uint8_t>(memory, tensor.u8.data(), n, shape.data(), shape.size());
       break;
     case ElementType::float32:
-      fill(f32);
-      input = Ort::Value::CreateTensor<float>(memory, f32.data(), n, shape.data(), shape.size());
+      input = Ort::Value::CreateTensor<float>(memory, tensor.f32.data(), n, shape.data(), shape.size());
       break;
   }
   std::vector<const char*> names;

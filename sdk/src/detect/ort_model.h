@@ -5,9 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "detect/decoders.h"
-#include "detect/image.h"
-#include "detect/model_card.h"
+#include "detect/pose_network.h"
 
 namespace octocap {
 
@@ -15,22 +13,21 @@ namespace octocap {
 // was built with (or the build has no ONNX Runtime).
 std::string onnxruntime_version();
 
-class OrtModel {
+class OrtModel final : public PoseNetwork {
  public:
   // intra_threads: ONNX Runtime's intra-op threads (0 = its default, all cores). gpu: try ONNX Runtime's CUDA
   // execution provider first; required: fail (Error(unsupported), saying why) rather than fall back to the CPU.
   // Throws Error(io) for a missing file, Error(invalid_argument) for a model whose input does not fit the card.
   OrtModel(const std::string& path, const ModelCard& card, int intra_threads, bool gpu = false, bool gpu_required = false);
-  ~OrtModel();
+  ~OrtModel() override;
   OrtModel(const OrtModel&) = delete;
   OrtModel& operator=(const OrtModel&) = delete;
 
-  // Runs the network on `canvas` (its size must be the card's, or any multiple of size_multiple for dynamic
-  // models) and returns every output as float. Safe to call from several threads at once.
-  std::vector<Tensor> run(const RgbCanvas& canvas);
-  const ModelCard& card() const { return card_; }
+  std::vector<Tensor> run(const RgbCanvas& canvas) override;
   // Whether the network runs on the GPU (the CUDA execution provider took it).
-  bool on_gpu() const { return on_gpu_; }
+  bool on_gpu() const override { return on_gpu_; }
+  Runtime runtime() const override { return Runtime::onnxruntime; }
+  Precision precision() const override { return Precision::f32; }
 
  private:
   struct Impl;
