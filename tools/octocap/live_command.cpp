@@ -43,7 +43,7 @@ int live(const LiveOptions& o) {
                                               : OCTOCAP_FILTER_ONE_EURO;
   scfg.max_people = max_people_of(o.people);
   apply_outputs(o.out, scfg);
-  octocap::Live capture(cfg, scfg, calib, o.cameras);
+  octocap::Live capture(cfg, scfg, calib, live_common::expand_camera_secrets(o.cameras));
   capture.set_detector(o.detector.config());
   if (!o.record.empty()) capture.set_recording(o.record);
   octocap_up_axis_t up = OCTOCAP_UP_Y;
@@ -116,7 +116,8 @@ int live(const LiveOptions& o) {
     if (cam.nominal_fps > 0) std::printf(" (says %.1f)", cam.nominal_fps);
     if (cam.bad_pictures > 0)
       std::printf(", %llu bad pictures skipped", static_cast<unsigned long long>(cam.bad_pictures));
-    if (o.cameras[c].rfind("dds://", 0) == 0) std::printf(", %s, clock offset %.1f ms", o.cameras[c].c_str(), cam.clock_offset_ms);
+    if (o.cameras[c].rfind("dds://", 0) == 0)
+      std::printf(", %s, clock offset %.1f ms", octocap_redact_credentials(o.cameras[c].c_str()), cam.clock_offset_ms);
     else if (cam.stream_clock) std::printf(", times from the stream's clock");
     if (cam.last_error[0]) std::printf("; last error: %s", cam.last_error);
     std::printf("\n");
@@ -137,7 +138,7 @@ int live(const LiveOptions& o) {
       const octocap_camera_status_t cam = capture.camera(c);
       if (cam.used == 0)
         std::fprintf(stderr, "  camera %s (number %u, %s) delivered nothing%s%s\n", cam.name, c + 1,
-                     o.cameras[c].c_str(), cam.last_error[0] ? ": " : "", cam.last_error);
+                     octocap_redact_credentials(o.cameras[c].c_str()), cam.last_error[0] ? ": " : "", cam.last_error);
     }
     if (s.last_error[0]) std::fprintf(stderr, "  the last frame set failed with: %s\n", s.last_error);
   }

@@ -102,7 +102,7 @@ int main(int argc, char** argv) {
 
   LiveOptions live;
   CLI::App* lv = app.add_subcommand("live", "Capture live from cameras (devices, rtsp://, http://, videos or picture folders as cameras) into 3D");
-  lv->add_option("--camera", live.cameras, "A camera, once per camera in calibration order: /dev/videoN or N, rtsp://..., http://... (MJPEG), a video file, a picture folder, or dds://NODE/CAMERA (a capture node's keypoints, on --domain/--topic)")->required();
+  lv->add_option("--camera", live.cameras, "A camera, once per camera in calibration order: /dev/videoN or N, rtsp://..., http://... (MJPEG), a video file, a picture folder, or dds://NODE/CAMERA (a capture node's keypoints, on --domain/--topic); ${NAME} in it is taken from the environment (a password kept out of ps)")->required();
   lv->add_option("--calibration", live.calibration, "Calibration TOML (anipose / Pose2Sim)")->required()->check(CLI::ExistingFile);
   lv->add_option("--duration", live.duration_s, "Stop after this many seconds (0: when the cameras end, or Ctrl-C)")->capture_default_str();
   lv->add_option("--picture-rate", live.picture_rate_hz, "Rate of picture-folder cameras")->check(CLI::PositiveNumber)->capture_default_str();

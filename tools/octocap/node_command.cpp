@@ -26,7 +26,7 @@ int node(const DetectOptions& o) {
   cfg.domain_id = o.domain;
   cfg.picture_rate_hz = static_cast<float>(o.picture_rate_hz);
   cfg.detect_rate_hz = static_cast<float>(o.detect_rate_hz);
-  octocap::Node capture(cfg, o.cameras, o.camera_names);
+  octocap::Node capture(cfg, live_common::expand_camera_secrets(o.cameras), o.camera_names);
   capture.set_detector(o.detector.config());
   live_common::catch_interrupts();
   capture.start();

@@ -137,6 +137,14 @@ OCTOCAP_API const char* octocap_result_name(octocap_result_t result);
  */
 OCTOCAP_API const char* octocap_last_error(void);
 
+/**
+ * (1.9) `text` with the password of every URL in it replaced by `***` (`rtsp://admin:S3cret@host/x` becomes
+ * `rtsp://admin:***@host/x`): what a program prints of a camera spec. The library does it itself for every message
+ * it gives (log lines, octocap_last_error(), camera statuses). NULL gives "". Valid until the next call on the same
+ * thread.
+ */
+OCTOCAP_API const char* octocap_redact_credentials(const char* text);
+
 /** Log levels. */
 typedef int32_t octocap_log_level_t;
 /** Values of ::octocap_log_level_t. */

@@ -3,13 +3,14 @@
 #include <cstring>
 
 #include "core/log.h"
+#include "core/redact.h"
 
 namespace octocap::capi {
 namespace {
 thread_local std::string t_last_error;
 }
 
-void set_last_error(const std::string& message) { t_last_error = message; }
+void set_last_error(const std::string& message) { t_last_error = redact_credentials(message); }
 void clear_last_error() { t_last_error.clear(); }
 
 void copy_name(char* dst, size_t capacity, const std::string& src) {
@@ -29,6 +30,16 @@ const char* octocap_version(void) { return OCTOCAP_VERSION_STRING; }
 uint32_t octocap_abi_version(void) { return OCTOCAP_ABI_VERSION; }
 uint32_t octocap_version_number(void) { return OCTOCAP_VERSION_NUMBER; }
 const char* octocap_last_error(void) { return capi::t_last_error.c_str(); }
+
+const char* octocap_redact_credentials(const char* text) {
+  static thread_local std::string redacted;
+  try {
+    redacted = text ? redact_credentials(text) : std::string();
+  } catch (...) {  // out of memory: nothing rather than the secret
+    redacted.clear();
+  }
+  return redacted.c_str();
+}
 
 const char* octocap_result_name(octocap_result_t r) {
   switch (r) {

@@ -10,6 +10,7 @@
 #include "capi/session_c.h"
 #include "capi/stream_c.h"
 #include "capi/struct_versions.h"
+#include "core/redact.h"
 
 using namespace octocap;
 
@@ -36,7 +37,7 @@ void fill_camera_status(const FeedStatus& s, const std::string& name, octocap_ca
     copy_name(o.name, sizeof o.name, name);
     o.clock_offset_ms = static_cast<float>(s.clock_offset_ms);
     o.stream_clock = s.stream_clock ? 1 : 0;
-    copy_name(o.last_error, sizeof o.last_error, s.last_error);
+    copy_name(o.last_error, sizeof o.last_error, redact_credentials(s.last_error));
     o.bad_pictures = s.bad_pictures;
   });
 }
@@ -205,7 +206,7 @@ octocap_result_t octocap_live_get_stats(const octocap_live_t* l, octocap_live_st
       o.sets_recorded = s.sets_recorded;
       o.recording_pictures_dropped = s.recording_pictures_dropped;
       o.failed = s.failed ? 1 : 0;
-      capi::copy_name(o.last_error, sizeof o.last_error, s.last_error);
+      capi::copy_name(o.last_error, sizeof o.last_error, redact_credentials(s.last_error));
       o.quality_rung = s.quality_rung;
       o.quality_rungs = s.quality_rungs;
       o.views_detected = s.views_detected;

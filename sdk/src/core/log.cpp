@@ -2,6 +2,8 @@
 
 #include <mutex>
 
+#include "core/redact.h"
+
 namespace octocap {
 namespace {
 
@@ -19,7 +21,7 @@ void set_log_sink(LogSink sink, LogLevel min_level) {
 
 void log(LogLevel level, const std::string& message) {
   std::lock_guard<std::mutex> lock(g_mutex);
-  if (g_sink && level >= g_min) g_sink(level, message.c_str());
+  if (g_sink && level >= g_min) g_sink(level, redact_credentials(message).c_str());
 }
 
 }  // namespace octocap
