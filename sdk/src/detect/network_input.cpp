@@ -5,6 +5,7 @@
 #include <type_traits>
 
 #include "core/error.h"
+#include "detect/decoders.h"
 
 namespace octocap {
 
@@ -15,6 +16,18 @@ void check_input_size(const ModelCard& card, const RgbCanvas& canvas) {
   if (!ok)
     throw Error(Errc::invalid_argument, "network input " + std::to_string(W) + "x" + std::to_string(H) +
                                             " does not suit model " + card.name);
+}
+
+void check_model_input(const std::string& path, const ModelCard& card, const std::vector<int64_t>& shape) {
+  if (shape.size() != 4)
+    throw Error(Errc::invalid_argument, path + ": input " + shape_string(shape) + " is not a 4D image tensor");
+  const int64_t h = shape[card.nchw ? 2 : 1], w = shape[card.nchw ? 3 : 2], c = shape[card.nchw ? 1 : 3];
+  if (c != 3 && c != -1)
+    throw Error(Errc::invalid_argument, path + ": input " + shape_string(shape) + " has " + std::to_string(c) +
+                                            " channels, 3 expected (is the card's tensor_layout right?)");
+  if (!card.dynamic_size && ((h > 0 && h != card.input_height) || (w > 0 && w != card.input_width)))
+    throw Error(Errc::invalid_argument, path + ": input " + shape_string(shape) + " differs from the card's " +
+                                            std::to_string(card.input_width) + "x" + std::to_string(card.input_height));
 }
 
 std::vector<int64_t> input_shape(const ModelCard& card, const RgbCanvas& canvas) {

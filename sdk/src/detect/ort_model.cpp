@@ -180,15 +180,7 @@ OrtModel::OrtModel(const std::string& path, const ModelCard& card, int intra_thr
                                               std::to_string(static_cast<int>(impl_->input_type)) +
                                               ") differs from its card's \"element_type\"");
     const auto shape = info.GetShape();
-    if (shape.size() != 4)
-      throw Error(Errc::invalid_argument, path + ": input " + shape_string(shape) + " is not a 4D image tensor");
-    const int64_t h = shape[card.nchw ? 2 : 1], w = shape[card.nchw ? 3 : 2], c = shape[card.nchw ? 1 : 3];
-    if (c != 3 && c != -1)
-      throw Error(Errc::invalid_argument, path + ": input " + shape_string(shape) + " has " + std::to_string(c) +
-                                              " channels, 3 expected (is the card's tensor_layout right?)");
-    if (!card.dynamic_size && ((h > 0 && h != card.input_height) || (w > 0 && w != card.input_width)))
-      throw Error(Errc::invalid_argument, path + ": input " + shape_string(shape) + " differs from the card's " +
-                                              std::to_string(card.input_width) + "x" + std::to_string(card.input_height));
+    check_model_input(path, card, shape);
   } catch (const Ort::Exception& e) {
     throw Error(Errc::parse, path + ": ONNX Runtime cannot load it: " + e.what());
   }

@@ -108,15 +108,7 @@ OvModel::OvModel(const std::string& path, const ModelCard& card, int threads, in
     for (int64_t i = 0; i < rank && shape.dims; ++i)
       dims.push_back(shape.dims[i].min == shape.dims[i].max ? shape.dims[i].min : -1);
     ov_partial_shape_free(&shape);
-    if (dims.size() != 4)
-      throw Error(Errc::invalid_argument, path + ": input " + shape_string(dims) + " is not a 4D image tensor");
-    const int64_t h = dims[card.nchw ? 2 : 1], w = dims[card.nchw ? 3 : 2], c = dims[card.nchw ? 1 : 3];
-    if (c != 3 && c != -1)
-      throw Error(Errc::invalid_argument, path + ": input " + shape_string(dims) + " has " + std::to_string(c) +
-                                              " channels, 3 expected (is the card's tensor_layout right?)");
-    if (!card.dynamic_size && ((h > 0 && h != card.input_height) || (w > 0 && w != card.input_width)))
-      throw Error(Errc::invalid_argument, path + ": input " + shape_string(dims) + " differs from the card's " +
-                                              std::to_string(card.input_width) + "x" + std::to_string(card.input_height));
+    check_model_input(path, card, dims);
   }
   // LATENCY with a stream per concurrent caller: each view's inference runs on its share of the cores, none waits
   // for another's. No pinning: the threads share the machine with the cameras' decoders and the solver.
