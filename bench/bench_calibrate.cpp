@@ -8,7 +8,7 @@
 #include "calib/extrinsics.h"
 #include "synth.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 
 int main() {
   std::printf("extrinsics from person keypoints (25 per frame), 2 cores\n\n");

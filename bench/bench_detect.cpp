@@ -304,7 +304,7 @@ class Decoder {
     return frame;
   }
   std::vector<cv::VideoCapture> videos_;
-  std::vector<octocap::PicturePool> buffers_;
+  std::vector<octocap::internal::PicturePool> buffers_;
   std::future<std::vector<cv::Mat>> ahead_;
 };
 

@@ -9,7 +9,7 @@
 #include "pipeline/session.h"
 #include "solve/association.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 using Clock = std::chrono::steady_clock;
 
 namespace {

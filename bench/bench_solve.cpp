@@ -17,7 +17,7 @@
 #include "synth.h"
 #include "take_score.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 using Clock = std::chrono::steady_clock;
 
 namespace {

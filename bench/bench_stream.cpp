@@ -14,7 +14,7 @@
 #include "stream/dds_subscriber.h"
 #include "loopback_dds.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 using Clock = std::chrono::steady_clock;
 
 namespace {

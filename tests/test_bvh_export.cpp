@@ -9,7 +9,7 @@
 #include "support/temp_dir.h"
 #include "synth.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 
 TEST_CASE("BVH round trip: export, parse back, the same joint positions within 1 mm", "[bvh]") {
   const synth::Motion motion = synth::load_cmu_motion(synth::default_bvh_path(), 0, 200, 6);

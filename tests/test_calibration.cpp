@@ -24,7 +24,7 @@
 #include "support/temp_dir.h"
 #include "synth.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 using Catch::Matchers::ContainsSubstring;
 
 namespace {

@@ -7,7 +7,7 @@
 #include "core/camera.h"
 #include "synth.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 
 namespace {
 

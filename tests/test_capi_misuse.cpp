@@ -16,7 +16,7 @@ using Catch::Matchers::ContainsSubstring;
 namespace {
 
 struct Fixture {
-  octocap::Calibration cams = octocap::synth::make_camera_ring({});
+  octocap::internal::Calibration cams = octocap::internal::synth::make_camera_ring({});
   testing::Calib calib = testing::make_calibration(cams);
   octocap_session_config_t cfg{};
   testing::Session session;
@@ -25,9 +25,9 @@ struct Fixture {
   Fixture() {
     octocap_session_config_init(&cfg);
     session = testing::make_session(calib.get(), cfg);
-    const auto motion = octocap::synth::load_cmu_motion(octocap::synth::default_bvh_path(), 0, 1, 1);
+    const auto motion = octocap::internal::synth::load_cmu_motion(octocap::internal::synth::default_bvh_path(), 0, 1, 1);
     std::mt19937 rng(1);
-    const auto views = octocap::synth::observe(cams, motion.frames[0], octocap::LayoutId::body25, {0.5, 0, 0, 0}, rng);
+    const auto views = octocap::internal::synth::observe(cams, motion.frames[0], octocap::internal::LayoutId::body25, {0.5, 0, 0, 0}, rng);
     for (const auto& v : views)
       for (const auto& k : v.at(0))
         frame.push_back({static_cast<float>(k.x), static_cast<float>(k.y), static_cast<float>(k.confidence)});

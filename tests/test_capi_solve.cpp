@@ -11,7 +11,7 @@
 #include "support/skeleton_truth.h"
 #include "synth.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 
 namespace {
 

@@ -30,7 +30,7 @@
 #include "support/temp_dir.h"
 
 using Catch::Matchers::ContainsSubstring;
-using octocap::MultipartReader;
+using octocap::internal::MultipartReader;
 using testing::Camera;
 using testing::serve;
 
@@ -64,8 +64,8 @@ size_t resident_mb() {
   return 0;
 }
 
-std::unique_ptr<octocap::CameraFeed> feed_for(const std::string& url, octocap::FeedOptions options = {}) {
-  return std::make_unique<octocap::CameraFeed>(octocap::parse_camera_spec(url), options, [] {});
+std::unique_ptr<octocap::internal::CameraFeed> feed_for(const std::string& url, octocap::internal::FeedOptions options = {}) {
+  return std::make_unique<octocap::internal::CameraFeed>(octocap::internal::parse_camera_spec(url), options, [] {});
 }
 
 }  // namespace
@@ -105,7 +105,7 @@ TEST_CASE("multipart parts larger than any picture are refused at once", "[captu
   CHECK_THROWS_WITH(reader.feed(huge.data(), huge.size()), ContainsSubstring("99999999999 bytes"));
   MultipartReader negative("frame");
   const std::string bad = "--frame\r\nContent-Length: -5\r\n\r\n";
-  CHECK_THROWS_AS(negative.feed(bad.data(), bad.size()), octocap::Error);
+  CHECK_THROWS_AS(negative.feed(bad.data(), bad.size()), octocap::internal::Error);
   // Without a length, a body that never meets its boundary stops at the cap instead of growing.
   MultipartReader endless("frame");
   const std::string head = "--frame\r\n\r\n";
@@ -115,7 +115,7 @@ TEST_CASE("multipart parts larger than any picture are refused at once", "[captu
   for (int i = 0; i < 80 && !refused; ++i) {
     try {
       endless.feed(chunk.data(), chunk.size());
-    } catch (const octocap::Error& e) {
+    } catch (const octocap::internal::Error& e) {
       refused = true;
       CHECK_THAT(e.what(), ContainsSubstring("64 MB"));
       CHECK(i >= 63);
@@ -125,11 +125,11 @@ TEST_CASE("multipart parts larger than any picture are refused at once", "[captu
   // Header lines that never end are not a stream either.
   MultipartReader garbage("frame");
   const std::string noise(100 << 10, 'y');
-  CHECK_THROWS_AS(garbage.feed(noise.data(), noise.size()), octocap::Error);
+  CHECK_THROWS_AS(garbage.feed(noise.data(), noise.size()), octocap::internal::Error);
 }
 
 TEST_CASE("JPEG pictures decode; corrupt ones, non-pictures and absurd sizes are reported, not smeared", "[capture]") {
-  octocap::JpegDecoder decoder;
+  octocap::internal::JpegDecoder decoder;
   const std::vector<unsigned char> jpeg = real_jpeg();
   cv::Mat bgr;
   REQUIRE(decoder.decode(jpeg, bgr));
@@ -162,7 +162,7 @@ TEST_CASE("an MJPEG camera: corrupt pictures are skipped and counted, the connec
   auto feed = feed_for(cam.url);
   feed->start();
   REQUIRE(testing::wait_until([&] { return feed->status().bad_pictures >= 10; }, 20000));
-  const octocap::FeedStatus s = feed->status();
+  const octocap::internal::FeedStatus s = feed->status();
   feed->stop();
   CHECK(s.reconnects == 0);  // FFmpeg's reader reconnected at each one: 47 times in 8 s
   CHECK(s.grabbed >= s.bad_pictures);  // two good pictures for every bad one
@@ -177,7 +177,7 @@ TEST_CASE("an MJPEG camera: a part announcing 99999999999 bytes is refused, memo
   feed->start();  // the headers are fine: the camera opens
   REQUIRE(testing::wait_until([&] { return feed->status().reconnects >= 3; }, 20000));
   const size_t after = resident_mb();
-  const octocap::FeedStatus s = feed->status();
+  const octocap::internal::FeedStatus s = feed->status();
   feed->stop();
   CHECK_THAT(s.last_error, ContainsSubstring("99999999999 bytes"));
   CHECK(s.grabbed == 0);
@@ -190,13 +190,13 @@ TEST_CASE("an MJPEG camera whose parts are not pictures says so; unopenable ones
   auto feed = feed_for(text.url);
   feed->start();
   REQUIRE(testing::wait_until([&] { return !feed->status().last_error.empty(); }, 20000));
-  const octocap::FeedStatus s = feed->status();
+  const octocap::internal::FeedStatus s = feed->status();
   feed->stop();
   CHECK(s.grabbed == 0);
   CHECK(s.bad_pictures >= 30);
   CHECK_THAT(s.last_error, ContainsSubstring("30 pictures in a row") && ContainsSubstring("not a JPEG picture"));
 
-  octocap::FeedOptions quick;
+  octocap::internal::FeedOptions quick;
   quick.source.open_timeout_ms = 1000;
   const Camera missing = serve(dir, "not-found");
   const Camera silent = serve(dir, "silent");
@@ -210,8 +210,8 @@ TEST_CASE("an MJPEG camera whose parts are not pictures says so; unopenable ones
     try {
       f->start();
       FAIL("opened " << url);
-    } catch (const octocap::Error& e) {
-      CHECK(e.code() == octocap::Errc::io);
+    } catch (const octocap::internal::Error& e) {
+      CHECK(e.code() == octocap::internal::Errc::io);
       CHECK_THAT(e.what(), ContainsSubstring(url) && ContainsSubstring(reason));
     }
   }
@@ -220,13 +220,13 @@ TEST_CASE("an MJPEG camera whose parts are not pictures says so; unopenable ones
 TEST_CASE("an MJPEG camera: pictures in order, and a stop while it stalls ends the read at once", "[capture][network]") {
   testing::TempDir dir;
   const Camera cam = serve(dir, "stall", {"--parts", "20"});
-  octocap::FeedOptions patient;
+  octocap::internal::FeedOptions patient;
   patient.source.read_timeout_ms = 20000;  // FFmpeg's reader would sit in its read this long
   auto feed = feed_for(cam.url, patient);
   feed->start();
   REQUIRE(testing::wait_until([&] { return feed->status().grabbed >= 20; }, 20000));
-  octocap::CapturedFrame frame;
-  const octocap::Candidate newest = feed->candidate(0);
+  octocap::internal::CapturedFrame frame;
+  const octocap::internal::Candidate newest = feed->candidate(0);
   REQUIRE(feed->take(newest.newest.sequence, frame));
   CHECK(frame.width == 272);
   CHECK(frame.height == 480);
@@ -235,7 +235,7 @@ TEST_CASE("an MJPEG camera: pictures in order, and a stop while it stalls ends t
   feed->stop();
   const double stop_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   CHECK(stop_s < 2.0);  // not a speed figure: a stop that waited for the read would take 20 s
-  CHECK(feed->status().state == octocap::FeedState::stopped);
+  CHECK(feed->status().state == octocap::internal::FeedState::stopped);
   CHECK(feed->status().last_error.empty());  // the stop is not the camera's error
 }
 
@@ -274,23 +274,23 @@ TEST_CASE("a picture-folder camera skips an unreadable picture, names it, and pl
   dir.write("f005.jpg", "this is text, not a picture");
   std::vector<std::string> warnings;
   std::mutex m;
-  octocap::set_log_sink([&](octocap::LogLevel level, const char* message) {
+  octocap::internal::set_log_sink([&](octocap::internal::LogLevel level, const char* message) {
     const std::lock_guard<std::mutex> lock(m);
-    if (level == octocap::LogLevel::warning) warnings.push_back(message);
-  }, octocap::LogLevel::warning);
-  octocap::FeedOptions options;
+    if (level == octocap::internal::LogLevel::warning) warnings.push_back(message);
+  }, octocap::internal::LogLevel::warning);
+  octocap::internal::FeedOptions options;
   options.pace_files = false;
   auto feed = feed_for(dir.path().string(), options);
   feed->start();
   REQUIRE(testing::wait_until([&] { return feed->done(); }, 20000));
   // The last picture (the 12th file) keeps its place in time: the bad file was a gap, not a shift.
-  octocap::CapturedFrame last;
+  octocap::internal::CapturedFrame last;
   REQUIRE(feed->take(feed->candidate(0).newest.sequence, last));
   CHECK(last.stream_us == 11 * 1000000 / 30);
-  const octocap::FeedStatus s = feed->status();
+  const octocap::internal::FeedStatus s = feed->status();
   feed->stop();
-  octocap::set_log_sink(nullptr, octocap::LogLevel::warning);
-  CHECK(s.state == octocap::FeedState::ended);  // played to its end, not stopped at the bad file
+  octocap::internal::set_log_sink(nullptr, octocap::internal::LogLevel::warning);
+  CHECK(s.state == octocap::internal::FeedState::ended);  // played to its end, not stopped at the bad file
   CHECK(s.grabbed == 11);
   CHECK(s.bad_pictures == 1);
   REQUIRE(warnings.size() == 1);

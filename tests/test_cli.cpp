@@ -50,7 +50,7 @@ TEST_CASE("octocap solve on the sample: TRC, CSV and accuracy against its ground
     REQUIRE(std::regex_search(r.output, m, std::regex("median ([0-9.]+) px")));
     CHECK(std::stod(m[1]) < 3.0);
 
-    const octocap::MotionTrack trc = octocap::read_trc(dir.file("a.trc"));
+    const octocap::internal::MotionTrack trc = octocap::internal::read_trc(dir.file("a.trc"));
     REQUIRE(trc.markers.size() == 25);
     REQUIRE(trc.markers[0] == "Nose");
     REQUIRE(trc.frames.size() == 90);
@@ -66,7 +66,7 @@ TEST_CASE("octocap solve on the sample: TRC, CSV and accuracy against its ground
       ++rows;
     }
     REQUIRE(rows == 90);
-    const octocap::BvhMotion bvh = octocap::read_bvh(dir.file("a.bvh"));
+    const octocap::internal::BvhMotion bvh = octocap::internal::read_bvh(dir.file("a.bvh"));
     REQUIRE(bvh.frames.size() == 90);
     REQUIRE(bvh.find("LeftForeArm") >= 0);
   }
@@ -112,7 +112,7 @@ TEST_CASE("octocap --help and layouts", "[cli]") {
 
 TEST_CASE("octocap-calibrate extrinsics recovers the sample's cameras from its keypoints", "[cli][calib]") {
   testing::TempDir dir;
-  const octocap::Calibration truth = octocap::read_calibration_toml(kSample + "/calibration.toml");
+  const octocap::internal::Calibration truth = octocap::internal::read_calibration_toml(kSample + "/calibration.toml");
   const double d = (truth[0].center() - truth[2].center()).norm();
   const Run r = run("extrinsics --calibration " + kSample + "/calibration.toml --keypoints " + kSample +
                         "/keypoints --camera-distance cam_1:cam_3:" + std::to_string(d) + " --output " +
@@ -121,7 +121,7 @@ TEST_CASE("octocap-calibrate extrinsics recovers the sample's cameras from its k
   INFO(r.output);
   REQUIRE(r.status == 0);
   REQUIRE_THAT(r.output, ContainsSubstring("bundle adjustment") && ContainsSubstring("RMS"));
-  const octocap::Calibration got = octocap::read_calibration_toml(dir.file("c.toml"));
+  const octocap::internal::Calibration got = octocap::internal::read_calibration_toml(dir.file("c.toml"));
   REQUIRE(got.size() == truth.size());
   Eigen::Matrix3Xd A(3, truth.size()), B(3, got.size());
   for (size_t i = 0; i < truth.size(); ++i) {
@@ -166,11 +166,11 @@ TEST_CASE("octocap detect writes OpenPose JSON per camera that octocap reads bac
   CHECK_THAT(r.output, ContainsSubstring("views with a person:  2 / 2"));
   for (const char* cam : {"cam_a", "cam_b"}) {
     const std::string json = dir.file(std::string("kp/") + cam + "_json/" + cam + "_000000000000_keypoints.json");
-    const auto people = octocap::read_openpose_file(json, 17);
+    const auto people = octocap::internal::read_openpose_file(json, 17);
     CHECK(!people.empty());
     CHECK(std::filesystem::exists(dir.file(std::string("dbg/") + cam + "_frame_000000.png")));
   }
-  CHECK(octocap::read_openpose_file(dir.file("kp/cam_a_json/cam_a_000000000000_keypoints.json"), 17).size() >= 2);
+  CHECK(octocap::internal::read_openpose_file(dir.file("kp/cam_a_json/cam_a_000000000000_keypoints.json"), 17).size() >= 2);
   const Run bad = run("detect --images " + dir.file("images") + " --output " + dir.file("kp2") + " --model " + dir.file("none.onnx"));
   CHECK(bad.status != 0);
   CHECK_THAT(bad.output, ContainsSubstring("none"));

@@ -7,7 +7,7 @@
 #include "detect/decoders.h"
 #include "detect/person_pick.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 using Catch::Approx;
 
 namespace {

@@ -7,7 +7,7 @@
 
 #include "detect/flow_tracker.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 
 namespace {
 

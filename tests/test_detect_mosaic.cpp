@@ -10,7 +10,7 @@
 #include "detect/mosaic.h"
 #include "detect/turned_crop.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 using Catch::Approx;
 
 TEST_CASE("mosaic tiling round-trips view pixels exactly for 1..9 views of mixed sizes") {

@@ -317,7 +317,7 @@ TEST_CASE("MoveNet Thunder INT8 finds what the float model finds on real photos 
     Detector float_model;
     REQUIRE(create("movenet-thunder", OCTOCAP_DETECT_CROP, float_model) == OCTOCAP_OK);
   }
-  const bool vnni = octocap::cpu_has_vnni();
+  const bool vnni = octocap::internal::cpu_has_vnni();
   INFO("VNNI: " << vnni << ", warnings: " << warnings.size());
   REQUIRE(warnings.size() == (vnni ? 0u : 1u));  // the float model never warns
   if (!vnni) {

@@ -9,7 +9,7 @@
 #include "synth.h"
 #include "take_score.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 
 TEST_CASE("One Euro removes jitter from a still point", "[filter]") {
   OneEuroFilter3 f(1.5, 5.0);

@@ -15,7 +15,7 @@
 #include "support/temp_dir.h"
 #include "synth.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 using Catch::Matchers::ContainsSubstring;
 
 namespace {
@@ -30,7 +30,7 @@ Error error_of(F&& fn) {
   } catch (const Error& e) {
     return e;
   }
-  FAIL("expected an octocap::Error");
+  FAIL("expected an octocap::internal::Error");
   return Error(Errc::internal, "");
 }
 

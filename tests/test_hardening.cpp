@@ -251,7 +251,7 @@ TEST_CASE("hardening: extreme frame numbers and timestamps are refused or handle
 }
 
 TEST_CASE("hardening: two people in 18 views is solved, the right person picked, in bounded work", "[hardening]") {
-  using namespace octocap;
+  using namespace octocap::internal;
   synth::RigOptions rig;
   rig.cameras = 18;
   rig.distortion = false;

@@ -7,7 +7,7 @@
 #include "core/layout.h"
 #include "octocap/octocap.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 
 TEST_CASE("every layout maps every skeleton joint onto valid keypoints", "[layout]") {
   for (LayoutId id : all_layouts()) {

@@ -71,7 +71,7 @@ TEST_CASE("stream clock: capture times from a stream's own timestamps survive la
   // A 60 Hz camera; the host decodes each picture 5 ms late at best, often later, and in bursts of 80 ms.
   const int64_t period = 16667, origin = 5000000, least = 5000;
   auto delay = [&](int k) -> int64_t { return k % 7 == 0 ? least : (k % 30 < 6 ? 80000 - (k % 30) * 12000 : 20000); };
-  octocap::StreamClock clock;
+  octocap::internal::StreamClock clock;
   double worst = 0;
   for (int k = 0; k < 300; ++k) {
     const int64_t capture = origin + k * period, grab = capture + std::max(least, delay(k));
@@ -84,7 +84,7 @@ TEST_CASE("stream clock: capture times from a stream's own timestamps survive la
   // A busy host: for two seconds every picture is decoded 40-50 ms late. The clock stays trusted and its capture times
   // stay within a few milliseconds (the least offset may creep 1 ms a second); grab times would be 40 ms off. A rise
   // that lasts longer is the offset itself changing: the trust is dropped, then given again at the new offset.
-  octocap::StreamClock busy;
+  octocap::internal::StreamClock busy;
   double worst_busy = 0;
   bool dropped_in_long_rise = false;
   int64_t last_error = 0;
@@ -110,7 +110,7 @@ TEST_CASE("stream clock: capture times from a stream's own timestamps survive la
   CHECK(clock.capture_us(t + 30000, 0) == t + 30000);
   CHECK_FALSE(clock.trusted());
   // Timestamps that run a tenth slower than real time (a made-up frame count) are never trusted.
-  octocap::StreamClock slow;
+  octocap::internal::StreamClock slow;
   for (int k = 0; k < 400; ++k) {
     const int64_t grab = origin + k * period + delay(k);
     CHECK(slow.capture_us(grab, k * period * 9 / 10) == grab);
@@ -118,9 +118,9 @@ TEST_CASE("stream clock: capture times from a stream's own timestamps survive la
 }
 
 TEST_CASE("frame sets: each camera's picture nearest the set's time, late and silent cameras left out", "[live]") {
-  using octocap::Candidate;
-  using octocap::Picture;
-  octocap::FrameSetOptions o;
+  using octocap::internal::Candidate;
+  using octocap::internal::Picture;
+  octocap::internal::FrameSetOptions o;
   o.tolerance_us = 8333;   // half a frame at 60 Hz
   o.max_wait_us = 16667;   // a frame
   auto cam = [](uint64_t seq, int64_t newest, int64_t previous) {
@@ -132,7 +132,7 @@ TEST_CASE("frame sets: each camera's picture nearest the set's time, late and si
   };
   // Four free-running 60 Hz cameras at phases 0, 4, 8 and 12 ms: no half-frame window holds their newest pictures,
   // but the newest and the one before always give each a picture within half a frame of the oldest newest (16 ms).
-  auto d = octocap::decide_frame_set({cam(2, 16000, 0), cam(2, 20000, 4000), cam(2, 24000, 8000), cam(2, 28000, 12000)},
+  auto d = octocap::internal::decide_frame_set({cam(2, 16000, 0), cam(2, 20000, 4000), cam(2, 24000, 8000), cam(2, 28000, 12000)},
                                      30000, o);
   CHECK(d.emit);
   CHECK(d.time_us == 16000);
@@ -141,35 +141,35 @@ TEST_CASE("frame sets: each camera's picture nearest the set's time, late and si
   Candidate used = cam(2, 20000, -1);
   used.newest = Picture{};
   used.last_us = 20000;
-  d = octocap::decide_frame_set({cam(3, 33000, -1), used, cam(3, 41000, -1), cam(3, 45000, -1)}, 36000, o);
+  d = octocap::internal::decide_frame_set({cam(3, 33000, -1), used, cam(3, 41000, -1), cam(3, 45000, -1)}, 36000, o);
   CHECK_FALSE(d.emit);
   // ... but once it has been silent for max_wait (stalled, dropped, reconnecting), the set goes out without it.
-  d = octocap::decide_frame_set({cam(3, 33000, -1), used, cam(3, 37000, -1), cam(3, 39000, -1)}, 40000, o);
+  d = octocap::internal::decide_frame_set({cam(3, 33000, -1), used, cam(3, 37000, -1), cam(3, 39000, -1)}, 40000, o);
   CHECK(d.emit);
   CHECK(d.take == std::vector<uint64_t>{3, 0, 3, 3});
   // A camera that never delivered anything is not waited for.
   Candidate never;
-  d = octocap::decide_frame_set({cam(1, 1000, -1), never}, 1500, o);
+  d = octocap::internal::decide_frame_set({cam(1, 1000, -1), never}, 1500, o);
   CHECK(d.emit);
   CHECK(d.take == std::vector<uint64_t>{1, 0});
   // A camera whose newest picture is older than max_wait does not drag the set's time back: it is left out.
-  d = octocap::decide_frame_set({cam(9, 100000, 83000), cam(9, 104000, 87000), cam(2, 20000, 3000)}, 105000, o);
+  d = octocap::internal::decide_frame_set({cam(9, 100000, 83000), cam(9, 104000, 87000), cam(2, 20000, 3000)}, 105000, o);
   CHECK(d.emit);
   CHECK(d.time_us == 100000);
   CHECK(d.take == std::vector<uint64_t>{9, 9, 0});
   // A known latency offset (camera 2 delivers 30 ms late) puts it back in.
   o.offsets_us = {0, 0, 30000};
   o.max_wait_us = 100000;
-  d = octocap::decide_frame_set({cam(9, 100000, 83000), cam(9, 104000, 87000), cam(5, 131000, 114000)}, 132000, o);
+  d = octocap::internal::decide_frame_set({cam(9, 100000, 83000), cam(9, 104000, 87000), cam(5, 131000, 114000)}, 132000, o);
   CHECK(d.emit);
   CHECK(d.take == std::vector<uint64_t>{9, 9, 5});
   // Nothing anywhere: nothing to do.
-  d = octocap::decide_frame_set({never, never}, 1000000, o);
+  d = octocap::internal::decide_frame_set({never, never}, 1000000, o);
   CHECK_FALSE(d.emit);
 }
 
 TEST_CASE("picture pool: a decoder reuses the buffers nobody holds and never writes one a consumer holds", "[live]") {
-  octocap::PicturePool pool(2);
+  octocap::internal::PicturePool pool(2);
   auto decode = [](cv::Mat& into, unsigned char value) { into.create(1920, 1088, CV_8UC3), into.setTo(value); };
   auto value = [](const cv::Mat& m) { return m.at<cv::Vec3b>(100, 100)[0]; };
   cv::Mat& first = pool.next();

@@ -14,7 +14,7 @@
 #include "pipeline/session.h"
 #include "temp_dir.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 
 namespace {
 

@@ -28,7 +28,7 @@
 #include "support/temp_dir.h"
 
 using Catch::Matchers::ContainsSubstring;
-using namespace octocap;
+using namespace octocap::internal;
 namespace fs = std::filesystem;
 
 namespace {

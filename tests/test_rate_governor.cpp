@@ -12,7 +12,7 @@
 #include "core/error.h"
 #include "pipeline/rate_governor.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 using Catch::Matchers::WithinAbs;
 
 namespace {

@@ -15,7 +15,7 @@
 #include "rig/bone_solver.h"
 #include "synth.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 
 namespace {
 

@@ -7,7 +7,7 @@
 #include "solve/volume.h"
 #include "synth.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 
 namespace {
 

@@ -139,13 +139,13 @@ int64_t take_index(octocap_subscriber_t* sub, int timeout_ms) {
 
 // A writer that does not go through octocap (record profile), for samples octocap would never write.
 struct RawWriter {
-  octocap::DdsParticipant participant{test_domain()};
+  octocap::internal::DdsParticipant participant{test_domain()};
   dds_entity_t writer = 0;
   RawWriter(const dds_topic_descriptor_t* type, const std::string& topic) {
-    octocap::StreamConfig sc;
-    sc.qos = octocap::StreamQos::record;
-    const dds_entity_t t = octocap::create_topic(participant.get(), type, topic);
-    dds_qos_t* q = octocap::pose_qos(sc);
+    octocap::internal::StreamConfig sc;
+    sc.qos = octocap::internal::StreamQos::record;
+    const dds_entity_t t = octocap::internal::create_topic(participant.get(), type, topic);
+    dds_qos_t* q = octocap::internal::pose_qos(sc);
     writer = dds_create_writer(participant.get(), t, q, nullptr);
     dds_delete_qos(q);
     REQUIRE(writer > 0);
@@ -399,18 +399,18 @@ TEST_CASE("remote cameras: two capture nodes under one name are not merged; the 
           "[stream][nodes]") {
   const uint32_t domain = testing::loopback_dds_domain();
   const std::string topic = "octocap_dup_" + std::to_string(getpid());
-  auto receiver = std::make_shared<octocap::KeypointReceiver>(domain, topic);
-  octocap::FeedOptions options;
+  auto receiver = std::make_shared<octocap::internal::KeypointReceiver>(domain, topic);
+  octocap::internal::FeedOptions options;
   options.source.open_timeout_ms = 10000;
-  octocap::RemoteFeed feed(octocap::parse_camera_spec("dds://nodeA/cam01"), options, receiver, [] {});
-  octocap::KeypointPublisher first(domain, topic), second(domain, topic);
+  octocap::internal::RemoteFeed feed(octocap::internal::parse_camera_spec("dds://nodeA/cam01"), options, receiver, [] {});
+  octocap::internal::KeypointPublisher first(domain, topic), second(domain, topic);
   REQUIRE(testing::wait_until([&] { return first.matched_readers() >= 1 && second.matched_readers() >= 1; }, 10000));
   auto view = [](uint64_t frame) {
-    octocap::RemoteView v;
+    octocap::internal::RemoteView v;
     v.node = "nodeA";
     v.camera = "cam01";
     v.frame_number = frame;
-    v.capture_time_us = octocap::wall_clock_us();
+    v.capture_time_us = octocap::internal::wall_clock_us();
     v.nominal_fps = 50;
     v.width = 640;
     v.height = 480;
@@ -420,7 +420,7 @@ TEST_CASE("remote cameras: two capture nodes under one name are not merged; the 
   // (the second's frame numbers start at 1, as a node's do), then the second alone for 2 s, once the first is gone.
   std::atomic<bool> both_done{false};
   const auto t0 = std::chrono::steady_clock::now();
-  auto node = [&](octocap::KeypointPublisher& p, int first_tick, int last_tick, int phase_ms) {
+  auto node = [&](octocap::internal::KeypointPublisher& p, int first_tick, int last_tick, int phase_ms) {
     for (int tick = first_tick; tick <= last_tick; ++tick) {
       std::this_thread::sleep_until(t0 + std::chrono::milliseconds(20 * tick + phase_ms));
       p.publish(view(static_cast<uint64_t>(tick - first_tick + 1)));
@@ -433,10 +433,10 @@ TEST_CASE("remote cameras: two capture nodes under one name are not merged; the 
   std::thread node_b([&] { node(second, 50, 250, 10); });
   feed.start();
   REQUIRE(testing::wait_until([&] { return both_done.load(); }, 20000));
-  const octocap::FeedStatus during = feed.status();
+  const octocap::internal::FeedStatus during = feed.status();
   node_a.join();
   node_b.join();
-  const octocap::FeedStatus after = feed.status();
+  const octocap::internal::FeedStatus after = feed.status();
   feed.stop();
   INFO("during: " << during.grabbed << " grabbed, " << during.reconnects << " reconnects; after: " << after.grabbed);
   CHECK(during.reconnects == 0);   // merged, the interleaved frame numbers looked like a restart each time

@@ -18,7 +18,7 @@
 
 using Catch::Matchers::ContainsSubstring;
 namespace fs = std::filesystem;
-using namespace octocap;
+using namespace octocap::internal;
 
 namespace {
 

@@ -11,7 +11,7 @@
 #include "support/synth.h"
 #include "support/temp_dir.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 
 namespace {
 

@@ -240,11 +240,11 @@ TEST_CASE("VMC output with several people: a port each, kept while tracked, OK 0
   REQUIRE(socks[1] >= 0);
 
   // Two real motions side by side, five cameras; the first person walks off after frame 11.
-  octocap::synth::RigOptions rig;
-  const octocap::Calibration truth_calib = octocap::synth::make_camera_ring(rig);
-  const auto crowd = octocap::synth::make_crowd(2, 18);
+  octocap::internal::synth::RigOptions rig;
+  const octocap::internal::Calibration truth_calib = octocap::internal::synth::make_camera_ring(rig);
+  const auto crowd = octocap::internal::synth::make_crowd(2, 18);
   testing::TempDir dir;
-  octocap::write_calibration_toml(truth_calib, dir.file("calibration.toml"));
+  octocap::internal::write_calibration_toml(truth_calib, dir.file("calibration.toml"));
   octocap_calibration_t* c = nullptr;
   REQUIRE(octocap_calibration_load(dir.file("calibration.toml").c_str(), &c) == OCTOCAP_OK);
   testing::Calib calib(c);
@@ -261,8 +261,8 @@ TEST_CASE("VMC output with several people: a port each, kept while tracked, OK 0
     INFO("frame " << f);
     const bool both = f < 12;
     std::vector<std::vector<Eigen::Vector3d>> now{both ? crowd[0][f] : std::vector<Eigen::Vector3d>{}, crowd[1][f]};
-    const auto flat = octocap::synth::flatten(
-        octocap::synth::observe_crowd(truth_calib, now, octocap::LayoutId::body25, {}, rng).views);
+    const auto flat = octocap::internal::synth::flatten(
+        octocap::internal::synth::observe_crowd(truth_calib, now, octocap::internal::LayoutId::body25, {}, rng).views);
     REQUIRE(octocap_session_solve_keypoints(s.get(), reinterpret_cast<const octocap_keypoint2d_t*>(flat.xyc.data()),
                                             flat.people_per_view.data(), 5, static_cast<int64_t>(f) * 33333) ==
             OCTOCAP_OK);

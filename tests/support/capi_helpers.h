@@ -17,8 +17,8 @@ struct SessionDeleter {
 using Calib = std::unique_ptr<octocap_calibration_t, CalibDeleter>;
 using Session = std::unique_ptr<octocap_session_t, SessionDeleter>;
 
-octocap_camera_t to_c_camera(const octocap::Camera& cam);
-Calib make_calibration(const octocap::Calibration& cams);
+octocap_camera_t to_c_camera(const octocap::internal::Camera& cam);
+Calib make_calibration(const octocap::internal::Calibration& cams);
 Session make_session(const octocap_calibration_t* calib, const octocap_session_config_t& cfg);
 
 }  // namespace testing

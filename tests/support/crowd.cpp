@@ -12,7 +12,7 @@
 #include "io/calibration_toml.h"
 #include "io/openpose_json.h"
 
-namespace octocap::synth {
+namespace octocap::internal::synth {
 
 std::vector<std::vector<std::vector<Eigen::Vector3d>>> make_crowd(size_t people, size_t frames, double spread) {
   const std::string clips[] = {"/usr/share/assimp/models/BVH/01_01.bvh", "/usr/share/assimp/models/BVH/01_03.bvh"};
@@ -130,4 +130,4 @@ std::vector<std::vector<std::vector<Eigen::Vector3d>>> write_crowd_take(const Ca
   return crowd;
 }
 
-}  // namespace octocap::synth
+}  // namespace octocap::internal::synth

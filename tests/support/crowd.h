@@ -8,7 +8,7 @@
 
 #include "synth.h"
 
-namespace octocap::synth {
+namespace octocap::internal::synth {
 
 // `people` real motions of `frames` frames at 30 Hz: CMU clips 01_01 and 01_03 from different moments, each
 // placed at its own spot (a ring of `spread` metres around the origin, turned to face a different way), its walk
@@ -38,4 +38,4 @@ std::vector<std::vector<std::vector<Eigen::Vector3d>>> write_crowd_take(const Ca
                                                                         size_t frames, const std::string& dir,
                                                                         unsigned seed);
 
-}  // namespace octocap::synth
+}  // namespace octocap::internal::synth

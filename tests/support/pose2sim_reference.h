@@ -14,7 +14,7 @@ namespace testing {
 class Pose2SimReference {
  public:
   Pose2SimReference(const std::string& trc_path, octocap_layout_t layout)
-      : reference_(octocap::read_trc(trc_path)), index_(octocap_layout_keypoint_count(layout), -1) {
+      : reference_(octocap::internal::read_trc(trc_path)), index_(octocap_layout_keypoint_count(layout), -1) {
     for (size_t k = 0; k < index_.size(); ++k)
       for (size_t m = 0; m < reference_.markers.size(); ++m)
         if (reference_.markers[m] == octocap_layout_keypoint_name(layout, static_cast<uint32_t>(k)))
@@ -29,7 +29,7 @@ class Pose2SimReference {
       ++solved;
       reprojection_px.push_back(j.reprojection_error_px);
       if (index_[k] < 0 || frame >= reference_.frames.size()) continue;
-      const Eigen::Vector3d ours = octocap::zup_to_yup({j.position[0], j.position[1], j.position[2]});
+      const Eigen::Vector3d ours = octocap::internal::zup_to_yup({j.position[0], j.position[1], j.position[2]});
       const Eigen::Vector3d theirs = reference_.frames[frame][index_[k]];
       if (theirs.allFinite()) distance_m.push_back((ours - theirs).norm());
     }
@@ -39,7 +39,7 @@ class Pose2SimReference {
   std::vector<double> reprojection_px, distance_m;
 
  private:
-  octocap::MotionTrack reference_;
+  octocap::internal::MotionTrack reference_;
   std::vector<int> index_;
 };
 

@@ -7,11 +7,11 @@
 
 namespace testing {
 
-inline octocap::SkeletonJoints skeleton_from_keypoints(const std::vector<Eigen::Vector3d>& kps,
-                                                       octocap::LayoutId id) {
-  const octocap::KeypointLayout& l = octocap::layout(id);
-  octocap::SkeletonJoints j;
-  for (int i = 0; i < octocap::kJointCount; ++i) {
+inline octocap::internal::SkeletonJoints skeleton_from_keypoints(const std::vector<Eigen::Vector3d>& kps,
+                                                       octocap::internal::LayoutId id) {
+  const octocap::internal::KeypointLayout& l = octocap::internal::layout(id);
+  octocap::internal::SkeletonJoints j;
+  for (int i = 0; i < octocap::internal::kJointCount; ++i) {
     if (l.joint_sources[i].empty()) {
       j[i] = Eigen::Vector3d::Constant(std::nan(""));
       continue;
@@ -25,8 +25,8 @@ inline octocap::SkeletonJoints skeleton_from_keypoints(const std::vector<Eigen::
 }
 
 // Joints rebuilt from bone rotations and lengths alone, chained from the root's position.
-inline octocap::SkeletonJoints rebuild_from_bones(const octocap::SkeletonPose& pose, const Eigen::Vector3d& root) {
-  using namespace octocap;
+inline octocap::internal::SkeletonJoints rebuild_from_bones(const octocap::internal::SkeletonPose& pose, const Eigen::Vector3d& root) {
+  using namespace octocap::internal;
   SkeletonJoints j;
   j.fill(Eigen::Vector3d::Constant(std::nan("")));
   j[kRoot] = root;

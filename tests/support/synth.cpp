@@ -8,7 +8,7 @@
 
 #include "io/bvh.h"
 
-namespace octocap::synth {
+namespace octocap::internal::synth {
 namespace {
 
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
@@ -197,4 +197,4 @@ FlatFrame flatten(const std::vector<std::vector<Person2D>>& people) {
   return f;
 }
 
-}  // namespace octocap::synth
+}  // namespace octocap::internal::synth

@@ -11,7 +11,7 @@
 #include "core/layout.h"
 #include "io/openpose_json.h"
 
-namespace octocap::synth {
+namespace octocap::internal::synth {
 
 struct RigOptions {
   int cameras = 5;
@@ -59,4 +59,4 @@ struct FlatFrame {
 };
 FlatFrame flatten(const std::vector<std::vector<Person2D>>& people);
 
-}  // namespace octocap::synth
+}  // namespace octocap::internal::synth

@@ -18,18 +18,18 @@ struct TakeScore {
 };
 
 // The rig the filter was tuned on and is judged on: 4 cameras, 1920x1080, focal 1400 px.
-inline octocap::Calibration filter_cameras() {
-  octocap::synth::RigOptions rig;
+inline octocap::internal::Calibration filter_cameras() {
+  octocap::internal::synth::RigOptions rig;
   rig.cameras = 4;
   rig.width = 1920, rig.height = 1080, rig.focal = 1400;
-  return octocap::synth::make_camera_ring(rig);
+  return octocap::internal::synth::make_camera_ring(rig);
 }
 
 // Every frame of `motion` seen by `cams` with Gaussian pixel noise of `sigma` (nothing missing, wrong or swapped),
 // solved by one session with `cfg`.
-inline TakeScore score_take(const octocap::Calibration& cams, const octocap::synth::Motion& motion,
-                            const octocap::SessionConfig& cfg, double sigma, unsigned seed = 3) {
-  using namespace octocap;
+inline TakeScore score_take(const octocap::internal::Calibration& cams, const octocap::internal::synth::Motion& motion,
+                            const octocap::internal::SessionConfig& cfg, double sigma, unsigned seed = 3) {
+  using namespace octocap::internal;
   Session session(cfg, cams);
   synth::NoiseOptions noise;
   noise.pixel_sigma = sigma;

@@ -15,7 +15,7 @@
 #include "synth.h"
 
 namespace fs = std::filesystem;
-using namespace octocap;
+using namespace octocap::internal;
 
 int main(int argc, char** argv) {
   CLI::App app{"octocap-synth: make a synthetic multi-camera keypoint recording with ground truth"};

@@ -14,7 +14,7 @@
 
 namespace fs = std::filesystem;
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 Eigen::Vector3d board_point(const BoardSpec& b, int i) {
@@ -185,4 +185,4 @@ BoardViews detect_board_views(const std::string& directory, size_t cameras, cons
   return views;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

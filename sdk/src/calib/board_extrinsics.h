@@ -10,7 +10,7 @@
 #include "calib/extrinsics.h"
 #include "calib/intrinsics.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 // corners[set][camera] = the board's inner corners in that camera's image (row-major, board.cols per row),
 // empty where the camera did not see the whole board in that set.
@@ -23,4 +23,4 @@ Calibration calibrate_extrinsics_from_boards(const Calibration& intrinsics, cons
 // order); images with the same file name in different folders were taken at the same moment.
 BoardViews detect_board_views(const std::string& directory, size_t cameras, const BoardSpec& board);
 
-}  // namespace octocap
+}  // namespace octocap::internal

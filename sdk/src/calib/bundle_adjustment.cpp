@@ -7,7 +7,7 @@
 #include <array>
 #include <cmath>
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 // Pixel residual of one observation: world point -> camera (angle-axis, translation) -> OpenCV standard
@@ -91,4 +91,4 @@ BaResult bundle_adjust(Calibration& calib, const std::vector<bool>& adjust, int 
   return result;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -5,7 +5,7 @@
 
 #include "core/camera.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 struct BaObservation {
   int camera;
@@ -25,4 +25,4 @@ BaResult bundle_adjust(Calibration& calib, const std::vector<bool>& adjust, int 
                        std::vector<Eigen::Vector3d>& points, const std::vector<BaObservation>& observations,
                        double huber_px, int max_iterations);
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -15,7 +15,7 @@
 #include "core/stats.h"
 #include "core/rays.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 struct Obs {
@@ -363,19 +363,12 @@ Calibration calibrate_extrinsics(const Calibration& intrinsics,
 
   // A skeleton joint of frame f from the reconstructed keypoints, by the layout's definition.
   auto joint = [&](size_t f, int j, Eigen::Vector3d& out) {
-    for (const auto& alt : lay.joint_sources[j]) {
-      Eigen::Vector3d s = Eigen::Vector3d::Zero();
-      bool all = true;
-      for (int k : alt) {
-        all = all && known[f * K + k];
-        if (all) s += points[f * K + k];
-      }
-      if (all) {
-        out = s / static_cast<double>(alt.size());
-        return true;
-      }
-    }
-    return false;
+    const std::vector<int>* alt = first_present_alternative(lay.joint_sources[j], [&](int k) { return known[f * K + k]; });
+    if (!alt) return false;
+    Eigen::Vector3d s = Eigen::Vector3d::Zero();
+    for (int k : *alt) s += points[f * K + k];
+    out = s / static_cast<double>(alt->size());
+    return true;
   };
 
   // Scale.
@@ -457,4 +450,4 @@ Calibration calibrate_extrinsics(const Calibration& intrinsics,
   return calib;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

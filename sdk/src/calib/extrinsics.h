@@ -11,7 +11,7 @@
 #include "core/layout.h"
 #include "io/openpose_json.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 struct ExtrinsicsOptions {
   double person_height_m = 0;  // scale from the person's height (anthropometric keypoint path), or
@@ -51,4 +51,4 @@ Calibration calibrate_extrinsics(const Calibration& intrinsics,
 // (Drillis & Contini segment heights: 0.039, 0.285, 0.530, 0.818, ~0.93 of H).
 constexpr double kKeypointPathOfHeight = 0.89;
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -15,7 +15,7 @@
 
 namespace fs = std::filesystem;
 
-namespace octocap {
+namespace octocap::internal {
 
 namespace {
 
@@ -182,4 +182,4 @@ Camera calibrate_intrinsics(const std::string& directory, const BoardSpec& board
   return cam;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

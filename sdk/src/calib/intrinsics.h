@@ -5,7 +5,7 @@
 
 #include "core/camera.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 struct BoardSpec {
   int cols = 0, rows = 0;   // checkerboard: inner corners; ChArUco: squares
@@ -30,4 +30,4 @@ struct IntrinsicsReport {
 Camera calibrate_intrinsics(const std::string& directory, const BoardSpec& board, IntrinsicsReport* report,
                             const std::string& overlay_png = "");
 
-}  // namespace octocap
+}  // namespace octocap::internal

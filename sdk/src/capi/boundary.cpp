@@ -5,7 +5,7 @@
 #include "core/log.h"
 #include "core/redact.h"
 
-namespace octocap::capi {
+namespace octocap::internal::capi {
 namespace {
 thread_local std::string t_last_error;
 }
@@ -20,9 +20,9 @@ void copy_name(char* dst, size_t capacity, const std::string& src) {
   std::memset(dst + n, 0, capacity - n);
 }
 
-}  // namespace octocap::capi
+}  // namespace octocap::internal::capi
 
-using namespace octocap;
+using namespace octocap::internal;
 
 extern "C" {
 

@@ -9,7 +9,7 @@
 #include "core/error.h"
 #include "octocap/octocap.h"
 
-namespace octocap::capi {
+namespace octocap::internal::capi {
 
 void set_last_error(const std::string& message);
 void clear_last_error();
@@ -86,4 +86,4 @@ inline octocap_result_t status_unless(octocap_result_t r, bool produced, octocap
   return r == OCTOCAP_OK && !produced ? status : r;
 }
 
-}  // namespace octocap::capi
+}  // namespace octocap::internal::capi

@@ -10,7 +10,7 @@
 #include "capi/camera_c.h"
 #include "capi/handles.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 
 extern "C" {
 

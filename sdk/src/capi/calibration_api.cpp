@@ -7,7 +7,7 @@
 #include "io/calibration_toml.h"
 #include "io/calibration_yaml.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 
 namespace {
 

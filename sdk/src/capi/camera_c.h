@@ -3,6 +3,6 @@
 #include "core/camera.h"
 #include "octocap/octocap.h"
 
-namespace octocap::capi {
+namespace octocap::internal::capi {
 void camera_to_c(const Camera& cam, octocap_camera_t& out);
 }

@@ -10,9 +10,9 @@
 #include "detect/ort_model.h"
 #include "detect/ov_model.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 
-namespace octocap::capi {
+namespace octocap::internal::capi {
 
 DetectorConfig detector_config(const octocap_detector_config_t& given) {
   check_size(given.struct_size, kDetectorConfigSizes, "octocap_detector_config_t");
@@ -50,6 +50,26 @@ DetectorConfig detector_config(const octocap_detector_config_t& given) {
     throw Error(Errc::invalid_argument, "detector precision " + std::to_string(c.precision) + " is not a known precision");
   d.precision = static_cast<Precision>(c.precision);
   return d;
+}
+
+// DetectorConfig -> the C struct: octocap_detector_config_defaults() converts a default-constructed DetectorConfig,
+// so each default has one home (detect/detector.h).
+octocap_detector_config_t c_detector_config(const DetectorConfig& d) {
+  octocap_detector_config_t c{};
+  c.struct_size = sizeof c;
+  copy_name(c.model, sizeof c.model, d.model);
+  c.mode = static_cast<octocap_detect_mode_t>(d.mode);
+  c.person_pick = static_cast<octocap_person_pick_t>(d.pick);
+  c.threads = static_cast<uint32_t>(d.threads);
+  c.mosaic_tile_px = static_cast<uint32_t>(d.mosaic_tile);
+  c.max_people = static_cast<uint32_t>(d.max_people);
+  c.min_confidence = static_cast<float>(d.min_confidence);
+  c.parallel_views = static_cast<uint32_t>(d.parallel_views);
+  c.views_per_frame = static_cast<uint32_t>(d.views_per_frame);
+  c.device = static_cast<octocap_device_t>(d.device);
+  c.runtime = static_cast<octocap_runtime_t>(d.runtime);
+  c.precision = static_cast<octocap_precision_t>(d.precision);
+  return c;
 }
 
 std::vector<ImageView> image_views(const octocap_image_t* images, uint32_t count) {
@@ -99,7 +119,7 @@ void fill_detect_info(const Detector& detector, octocap_detect_info_t* out) {
   }
 }
 
-}  // namespace octocap::capi
+}  // namespace octocap::internal::capi
 
 namespace {
 
@@ -123,18 +143,7 @@ octocap_result_t octocap_detector_config_defaults(octocap_detector_config_t* c, 
   return capi::guard([&] {
     capi::require(c, "cfg");
     capi::check_size(struct_size, capi::kDetectorConfigSizes, "octocap_detector_config_t");
-    octocap_detector_config_t d{};
-    d.mode = OCTOCAP_DETECT_CROP;  // the most accurate path at per-view cost (README "Detecting")
-    d.person_pick = OCTOCAP_PICK_ALL;
-    d.threads = 0;
-    d.mosaic_tile_px = 256;
-    d.max_people = 4;
-    d.min_confidence = 0.3f;
-    d.parallel_views = 0;  // one view per core: every session has 2+ cameras (README "From images")
-    d.views_per_frame = 0;
-    d.device = OCTOCAP_DEVICE_CPU;  // a GPU only when asked: AUTO would load CUDA libraries a CPU user never needs
-    d.runtime = OCTOCAP_RUNTIME_AUTO;
-    d.precision = OCTOCAP_PRECISION_AUTO;
+    octocap_detector_config_t d = capi::c_detector_config(DetectorConfig{});
     capi::write_defaults(c, struct_size, d);
   });
 }

@@ -8,7 +8,7 @@
 #include "io/sync_toml.h"
 #include "solve/time_sync.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 
 extern "C" {
 

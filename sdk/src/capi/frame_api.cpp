@@ -3,15 +3,15 @@
 #include "capi/frame_queries.h"
 #include "capi/handles.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 
-namespace octocap::capi {
+namespace octocap::internal::capi {
 
 octocap_frame_t* make_frame(std::shared_ptr<const FrameResult> frame) {
   return make_handle<octocap_frame_t>(std::move(frame));
 }
 
-}  // namespace octocap::capi
+}  // namespace octocap::internal::capi
 
 namespace {
 

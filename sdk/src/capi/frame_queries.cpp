@@ -3,7 +3,7 @@
 #include "capi/boundary.h"
 #include "rig/engine_frames.h"
 
-namespace octocap::capi {
+namespace octocap::internal::capi {
 namespace {
 
 CoordFrame frame_of(octocap_coord_frame_t f) {
@@ -122,4 +122,4 @@ void query_person_views(const PersonResult& f, int32_t* out, uint32_t capacity, 
   });
 }
 
-}  // namespace octocap::capi
+}  // namespace octocap::internal::capi

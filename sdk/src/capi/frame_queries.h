@@ -8,7 +8,7 @@
 #include "core/frame.h"
 #include "octocap/octocap.h"
 
-namespace octocap::capi {
+namespace octocap::internal::capi {
 
 // Two-call pattern: out == NULL asks for the count; a short buffer is an error that still reports it.
 template <class Fill>
@@ -49,4 +49,4 @@ void fill_sized(T* out, size_t min_size, const char* name, Fill&& fill) {
   std::memcpy(out, &full, full.struct_size);
 }
 
-}  // namespace octocap::capi
+}  // namespace octocap::internal::capi

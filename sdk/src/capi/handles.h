@@ -22,56 +22,56 @@
 #endif
 
 struct octocap_calibration_t {
-  octocap::Calibration cameras;
+  octocap::internal::Calibration cameras;
 };
 
 struct octocap_session_t {
-  std::unique_ptr<octocap::Session> session;
+  std::unique_ptr<octocap::internal::Session> session;
 };
 
 // A frame is an immutable snapshot shared by every handle made from it (a session's frame is copied once per
 // octocap_session_get_frame, never while a caller reads it).
 struct octocap_frame_t {
-  std::shared_ptr<const octocap::FrameResult> frame;
+  std::shared_ptr<const octocap::internal::FrameResult> frame;
 };
 
 struct octocap_detector_t {
-  explicit octocap_detector_t(std::unique_ptr<octocap::Detector> d) : detector(std::move(d)) {}
-  std::unique_ptr<octocap::Detector> detector;
-  std::vector<std::vector<octocap::DetectedPerson>> people;  // last run, image pixels
+  explicit octocap_detector_t(std::unique_ptr<octocap::internal::Detector> d) : detector(std::move(d)) {}
+  std::unique_ptr<octocap::internal::Detector> detector;
+  std::vector<std::vector<octocap::internal::DetectedPerson>> people;  // last run, image pixels
 };
 
 struct octocap_recording_t {
-  std::unique_ptr<octocap::OpenPoseRecording> recording;
+  std::unique_ptr<octocap::internal::OpenPoseRecording> recording;
 };
 
 struct octocap_motion_writer_t {
-  std::unique_ptr<octocap::MotionWriter> writer;
+  std::unique_ptr<octocap::internal::MotionWriter> writer;
 };
 
 struct octocap_motion_t {
-  octocap::SkeletonMotion motion;
-  std::vector<std::vector<octocap::SkeletonPose>> bones;  // solved once at open, [person][frame]
+  octocap::internal::SkeletonMotion motion;
+  std::vector<std::vector<octocap::internal::SkeletonPose>> bones;  // solved once at open, [person][frame]
   uint32_t definition_counter = 0;
 };
 
 struct octocap_live_t {
-  std::unique_ptr<octocap::LiveEngine> engine;
+  std::unique_ptr<octocap::internal::LiveEngine> engine;
 };
 
 struct octocap_node_t {
 #ifdef OCTOCAP_HAVE_DDS
-  std::unique_ptr<octocap::KeypointNode> node;
+  std::unique_ptr<octocap::internal::KeypointNode> node;
 #endif
 };
 
 struct octocap_subscriber_t {
 #ifdef OCTOCAP_HAVE_DDS
-  std::unique_ptr<octocap::DdsSubscriber> subscriber;
+  std::unique_ptr<octocap::internal::DdsSubscriber> subscriber;
 #endif
 };
 
-namespace octocap::capi {
+namespace octocap::internal::capi {
 
 // Creates a handle and registers it; the pair of destroy() below unregisters and frees it.
 template <class H, class... Args>
@@ -89,4 +89,4 @@ void destroy_handle(H* h) {
 // A new frame handle over a snapshot.
 octocap_frame_t* make_frame(std::shared_ptr<const FrameResult> frame);
 
-}  // namespace octocap::capi
+}  // namespace octocap::internal::capi

@@ -12,7 +12,7 @@
 #include "capi/struct_versions.h"
 #include "core/redact.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 
 namespace {
 
@@ -21,7 +21,7 @@ const LiveEngine& engine_of(const octocap_live_t* l) { return *capi::checked(l, 
 
 }  // namespace
 
-namespace octocap::capi {
+namespace octocap::internal::capi {
 
 void fill_camera_status(const FeedStatus& s, const std::string& name, octocap_camera_status_t* out) {
   // 1.0's struct ended before clock_offset_ms: its callers get what their size holds.
@@ -74,7 +74,7 @@ void check_camera_index(uint32_t index, size_t count) {
                 "camera " + std::to_string(index) + " out of range (" + std::to_string(count) + " cameras)");
 }
 
-}  // namespace octocap::capi
+}  // namespace octocap::internal::capi
 
 extern "C" {
 
@@ -84,8 +84,11 @@ octocap_result_t octocap_live_config_defaults(octocap_live_config_t* c, uint32_t
     capi::check_size(struct_size, capi::kLiveConfigSizes, "octocap_live_config_t");
     octocap_live_config_t d{};
     capi::set_feed_defaults(d);
-    capi::copy_name(d.remote_topic, sizeof d.remote_topic, "octocap");
-    const LiveConfig live;
+    const LiveConfig live;  // the defaults' one home (pipeline/live_engine.h)
+    d.sync_tolerance_us = static_cast<uint32_t>(live.sync_tolerance_us);
+    d.max_wait_us = static_cast<uint32_t>(live.max_wait_us);
+    d.remote_domain_id = live.remote_domain_id;
+    capi::copy_name(d.remote_topic, sizeof d.remote_topic, live.remote_topic);
     d.quality = live.governed ? OCTOCAP_QUALITY_GOVERNED : OCTOCAP_QUALITY_MAX;
     d.target_fps = static_cast<float>(live.target_fps);
     d.latency_budget_ms = static_cast<uint32_t>(live.latency_budget_ms);

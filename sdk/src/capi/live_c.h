@@ -6,7 +6,7 @@
 #include "capture/feed_status.h"
 #include "octocap/octocap.h"
 
-namespace octocap::capi {
+namespace octocap::internal::capi {
 
 // A camera's status into the caller's struct (its struct_size bytes).
 void fill_camera_status(const FeedStatus& s, const std::string& name, octocap_camera_status_t* out);
@@ -27,4 +27,4 @@ std::vector<std::string> strings(const char* const* values, uint32_t count, cons
 // INVALID_ARGUMENT for a camera index beyond `count`.
 void check_camera_index(uint32_t index, size_t count);
 
-}  // namespace octocap::capi
+}  // namespace octocap::internal::capi

@@ -6,7 +6,7 @@
 #include "capi/handles.h"
 #include "rig/bone_solver.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include "capi/stream_c.h"
 #include "capi/struct_versions.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 
 namespace {
 

@@ -13,9 +13,9 @@
 #include "capi/struct_versions.h"
 #include "core/log.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 
-namespace octocap::capi {
+namespace octocap::internal::capi {
 
 // The C struct -> SessionConfig: a mapping only; Session validates the values (pipeline/session.cpp).
 SessionConfig session_config(const octocap_session_config_t* given) {
@@ -77,7 +77,43 @@ SessionConfig session_config(const octocap_session_config_t* given) {
   return s;
 }
 
-}  // namespace octocap::capi
+// SessionConfig -> the C struct. octocap_session_config_defaults() converts a default-constructed SessionConfig, so
+// each default has one home (pipeline/session.h) and the C ABI only maps.
+octocap_session_config_t c_session_config(const SessionConfig& s) {
+  octocap_session_config_t c{};
+  c.struct_size = sizeof c;
+  c.layout = static_cast<octocap_layout_t>(s.layout);
+  c.method = static_cast<octocap_method_t>(s.method);
+  c.filter = !s.filter ? OCTOCAP_FILTER_NONE : s.filter_adaptive ? OCTOCAP_FILTER_ONE_EURO : OCTOCAP_FILTER_ONE_EURO_FIXED;
+  c.up_axis = static_cast<octocap_up_axis_t>(s.up);
+  c.sigma = static_cast<uint32_t>(s.sigma);
+  c.min_views = static_cast<uint32_t>(s.min_views);
+  c.delta_m = static_cast<float>(s.delta);
+  c.pixel_tolerance = static_cast<float>(s.pixel_tolerance);
+  c.max_candidates = static_cast<uint32_t>(s.max_candidates);
+  c.min_confidence = static_cast<float>(s.min_confidence);
+  c.outlier_threshold_px = static_cast<float>(s.outlier_threshold_px);
+  for (int i = 0; i < 3; ++i) {
+    c.volume_min[i] = static_cast<float>(s.volume_min[i]);
+    c.volume_max[i] = static_cast<float>(s.volume_max[i]);
+  }
+  c.filter_min_cutoff_hz = static_cast<float>(s.filter_min_cutoff);
+  c.filter_beta = static_cast<float>(s.filter_beta);
+  c.worker_threads = s.threads;
+  c.first_frame_index = s.first_frame_index;
+  c.stream_enable = s.publish ? 1 : 0;
+  c.stream_domain_id = s.stream.domain_id;
+  c.stream_qos = static_cast<octocap_stream_qos_t>(s.stream.qos);
+  c.stream_history_depth = s.stream.history_depth;
+  c.stream_source_id = s.stream.source_id;
+  capi::copy_name(c.stream_topic, sizeof c.stream_topic, s.stream.topic);
+  c.vmc_port = s.vmc_port;
+  capi::copy_name(c.vmc_host, sizeof c.vmc_host, s.vmc_host);
+  c.max_people = s.max_people;
+  return c;
+}
+
+}  // namespace octocap::internal::capi
 
 namespace {
 
@@ -95,31 +131,7 @@ octocap_result_t octocap_session_config_defaults(octocap_session_config_t* c, ui
   return capi::guard([&] {
     capi::require(c, "cfg");
     capi::check_size(struct_size, capi::kSessionConfigSizes, "octocap_session_config_t");
-    octocap_session_config_t d{};
-    d.layout = OCTOCAP_LAYOUT_BODY_25;
-    d.method = OCTOCAP_METHOD_AUTO;
-    d.filter = OCTOCAP_FILTER_ONE_EURO;
-    d.up_axis = OCTOCAP_UP_AUTO;
-    d.sigma = 0;
-    d.min_views = 2;
-    d.delta_m = 0.01f;
-    d.pixel_tolerance = 4.0f;
-    d.max_candidates = 8;
-    d.min_confidence = 0.3f;
-    d.outlier_threshold_px = 15.0f;
-    d.filter_min_cutoff_hz = 1.5f;
-    d.filter_beta = 20.0f;
-    d.worker_threads = 0;
-    d.first_frame_index = 0;
-    d.stream_enable = 0;
-    d.stream_domain_id = 0;
-    d.stream_qos = OCTOCAP_QOS_LIVE;
-    d.stream_history_depth = 256;
-    d.stream_source_id = 1;
-    capi::copy_name(d.stream_topic, sizeof d.stream_topic, "octocap");
-    d.vmc_port = 0;
-    capi::copy_name(d.vmc_host, sizeof d.vmc_host, "127.0.0.1");
-    d.max_people = 1;
+    octocap_session_config_t d = capi::c_session_config(SessionConfig{});
     if (struct_size == sizeof(capi::LegacySessionConfig03)) {
       capi::LegacySessionConfig03 legacy{};
       d.struct_size = struct_size;

@@ -3,9 +3,10 @@
 #include "octocap/octocap.h"
 #include "pipeline/session.h"
 
-namespace octocap::capi {
+namespace octocap::internal::capi {
 
 // Any released struct size; the values are checked by Session itself.
 SessionConfig session_config(const octocap_session_config_t* given);
+octocap_session_config_t c_session_config(const SessionConfig& s);
 
-}  // namespace octocap::capi
+}  // namespace octocap::internal::capi

@@ -5,7 +5,7 @@
 #include "core/layout.h"
 #include "core/skeleton.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 
 namespace {
 const KeypointLayout* find_layout(octocap_layout_t id) {

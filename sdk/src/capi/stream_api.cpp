@@ -8,9 +8,9 @@
 #include "capi/stream_c.h"
 #include "capi/struct_versions.h"
 
-using namespace octocap;
+using namespace octocap::internal;
 
-namespace octocap::capi {
+namespace octocap::internal::capi {
 
 std::string topic_name(const char* topic, size_t topic_capacity, const char* what) {
   const size_t len = strnlen(topic, topic_capacity);
@@ -42,7 +42,7 @@ StreamConfig stream_config(uint32_t domain, int32_t qos, uint32_t history_depth,
   return s;
 }
 
-}  // namespace octocap::capi
+}  // namespace octocap::internal::capi
 
 namespace {
 

@@ -6,7 +6,7 @@
 
 #include "stream/stream_config.h"
 
-namespace octocap::capi {
+namespace octocap::internal::capi {
 
 // A DDS topic base name from a C char array: NUL-terminated, non-empty, letters, digits and '_'.
 std::string topic_name(const char* topic, size_t topic_capacity, const char* what);
@@ -15,4 +15,4 @@ uint32_t domain_id(uint32_t id);
 StreamConfig stream_config(uint32_t domain_id, int32_t qos, uint32_t history_depth, uint32_t source_id,
                            const char* topic, size_t topic_capacity);
 
-}  // namespace octocap::capi
+}  // namespace octocap::internal::capi

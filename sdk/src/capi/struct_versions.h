@@ -11,7 +11,7 @@
 #include "capi/boundary.h"
 #include "octocap/octocap.h"
 
-namespace octocap::capi {
+namespace octocap::internal::capi {
 
 // octocap_session_config_t: 0.1 (84), 0.2 streaming (152), 0.2 VMC = 1.0 (216), 0.3 with the detector config nested
 // at its end (760; see LegacySessionConfig03), 1.3 max_people (224).
@@ -79,4 +79,4 @@ T widen(const T& given, T defaults) {
   return defaults;
 }
 
-}  // namespace octocap::capi
+}  // namespace octocap::internal::capi

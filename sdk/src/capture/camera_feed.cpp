@@ -9,7 +9,7 @@
 #include "core/error.h"
 #include "core/log.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 CameraFeed::CameraFeed(CameraSpec spec, FeedOptions options, std::function<void()> on_frame)
     : Feed(std::move(spec), std::move(on_frame)), options_(options) {}
@@ -136,4 +136,4 @@ void CameraFeed::run() {
   }
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -10,7 +10,7 @@
 #include "capture/frame_source.h"
 #include "capture/picture_pool.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 class CameraFeed : public Feed {
  public:
@@ -35,4 +35,4 @@ class CameraFeed : public Feed {
   std::condition_variable wake_;  // interrupts back-off and pacing sleeps on stop (with Feed::mutex_)
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

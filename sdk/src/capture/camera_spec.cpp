@@ -5,7 +5,7 @@
 
 #include "core/error.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace fs = std::filesystem;
 
 namespace {
@@ -72,4 +72,4 @@ CameraSpec parse_camera_spec(const std::string& text) {
   return spec;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

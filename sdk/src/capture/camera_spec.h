@@ -4,7 +4,7 @@
 #pragma once
 #include <string>
 
-namespace octocap {
+namespace octocap::internal {
 
 enum class SourceKind : int { device = 0, network = 1, video_file = 2, picture_folder = 3, remote = 4 };
 
@@ -32,4 +32,4 @@ struct SourceOptions {
   double picture_rate_hz = 30;  // picture folders have no rate of their own
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

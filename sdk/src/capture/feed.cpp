@@ -4,7 +4,7 @@
 
 #include "core/clock.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 Candidate Feed::candidate(uint64_t after) const {
   const std::lock_guard<std::mutex> lock(mutex_);
@@ -91,4 +91,4 @@ void Feed::deliver(CapturedFrame frame) {
   if (on_frame_) on_frame_();
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -17,7 +17,7 @@
 #include "capture/frame_set.h"
 #include "core/person2d.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 struct CapturedFrame {
   cv::Mat image;                 // BGR; empty when the camera's keypoints were detected elsewhere
@@ -80,4 +80,4 @@ class Feed {
   double mean_interval_us_ = 0;
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

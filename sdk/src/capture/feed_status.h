@@ -5,7 +5,7 @@
 
 #include "capture/camera_spec.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 enum class FeedState : int { stopped = 0, connecting = 1, streaming = 2, reconnecting = 3, ended = 4, failed = 5 };
 
@@ -35,4 +35,4 @@ struct FeedOptions {
   bool pace_files = true;       // play files and folders at their own rate, as a camera would deliver them
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 
-namespace octocap {
+namespace octocap::internal {
 
 FrameSetDecision decide_frame_set(const std::vector<Candidate>& cameras, int64_t now_us, const FrameSetOptions& o) {
   const size_t n = cameras.size();
@@ -44,4 +44,4 @@ FrameSetDecision decide_frame_set(const std::vector<Candidate>& cameras, int64_t
   return d;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace octocap {
+namespace octocap::internal {
 
 struct FrameSetOptions {
   int64_t tolerance_us = 16667;     // pictures within this of the set's time belong to it (default: half a frame at 30 Hz)
@@ -42,4 +42,4 @@ struct FrameSetDecision {
 // bound and a dead camera never holds the others back.
 FrameSetDecision decide_frame_set(const std::vector<Candidate>& cameras, int64_t now_us, const FrameSetOptions& options);
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -12,7 +12,7 @@
 #include "core/log.h"
 #include "io/directories.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 // FFmpeg logs to stderr on its own (a refused connection, each retry); the library prints nothing, so it is told to
@@ -114,4 +114,4 @@ std::unique_ptr<FrameSource> make_ffmpeg_source(const CameraSpec& spec, const So
   return std::make_unique<VideoSource>(spec, options);
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

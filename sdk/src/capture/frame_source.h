@@ -10,7 +10,7 @@
 
 #include "capture/camera_spec.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 class FrameSource {
  public:
@@ -37,4 +37,4 @@ std::unique_ptr<FrameSource> make_frame_source(const CameraSpec& spec, const Sou
 // OpenCV's videoio alone, whatever the spec (the MJPEG reader hands over to it what is not MJPEG).
 std::unique_ptr<FrameSource> make_ffmpeg_source(const CameraSpec& spec, const SourceOptions& options);
 
-}  // namespace octocap
+}  // namespace octocap::internal

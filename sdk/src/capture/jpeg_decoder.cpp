@@ -4,7 +4,7 @@
 
 #include "core/error.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 JpegDecoder::JpegDecoder() : handle_(tjInitDecompress()) {
   if (handle_ == nullptr) throw Error(Errc::out_of_memory, "cannot start a JPEG decoder");
@@ -38,4 +38,4 @@ bool JpegDecoder::decode(const std::vector<unsigned char>& jpeg, cv::Mat& bgr) {
   return false;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -7,7 +7,7 @@
 
 #include <opencv2/core.hpp>
 
-namespace octocap {
+namespace octocap::internal {
 
 class JpegDecoder {
  public:
@@ -28,4 +28,4 @@ class JpegDecoder {
   std::string why_;
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

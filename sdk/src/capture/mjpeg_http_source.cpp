@@ -16,7 +16,7 @@
 #include "core/error.h"
 #include "core/log.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 constexpr int kMaxBadInARow = 30;  // about a second of a camera's pictures: the camera, not the wire, is at fault
@@ -257,4 +257,4 @@ std::unique_ptr<FrameSource> make_mjpeg_http_source(const CameraSpec& spec, cons
   return std::make_unique<MjpegHttpSource>(spec, options);
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -10,8 +10,8 @@
 
 #include "capture/frame_source.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 std::unique_ptr<FrameSource> make_mjpeg_http_source(const CameraSpec& spec, const SourceOptions& options);
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -6,7 +6,7 @@
 
 #include "core/error.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 constexpr size_t kMaxHeaderBytes = 64u << 10;
@@ -135,4 +135,4 @@ void MultipartReader::parse() {
   buffer_.erase(0, pos);
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace octocap {
+namespace octocap::internal {
 
 class MultipartReader {
  public:
@@ -40,4 +40,4 @@ class MultipartReader {
   uint64_t skipped_ = 0;
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

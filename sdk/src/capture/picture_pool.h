@@ -6,7 +6,7 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
-namespace octocap {
+namespace octocap::internal {
 
 class PicturePool {
  public:
@@ -41,4 +41,4 @@ class PicturePool {
   size_t turn_ = 0;
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

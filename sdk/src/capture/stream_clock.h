@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <cstdint>
 
-namespace octocap {
+namespace octocap::internal {
 
 class StreamClock {
  public:
@@ -59,4 +59,4 @@ class StreamClock {
   int busy_seconds_ = 0;
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-namespace octocap {
+namespace octocap::internal {
 
 bool Camera::has_distortion() const {
   for (double d : dist)
@@ -87,4 +87,4 @@ std::string picture_mismatch(const Camera& cam, int width, int height) {
          " (another aspect ratio: not the same picture; is it the camera the calibration means?)";
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace octocap {
+namespace octocap::internal {
 
 // A Rodrigues vector a calibration can mean: finite and at most 1000 radians long (beyond that the angle's last
 // digits are gone and the rotation is noise).
@@ -57,4 +57,4 @@ using Calibration = std::vector<Camera>;
 Eigen::Matrix3d rodrigues_to_matrix(const Eigen::Vector3d& r);
 Eigen::Vector3d matrix_to_rodrigues(const Eigen::Matrix3d& R);
 
-}  // namespace octocap
+}  // namespace octocap::internal

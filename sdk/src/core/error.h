@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace octocap {
+namespace octocap::internal {
 
 enum class Errc : int {
   invalid_argument = -1,
@@ -29,4 +29,4 @@ class Error : public std::runtime_error {
   Errc code_;
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -11,7 +11,7 @@
 #include "core/layout.h"
 #include "core/skeleton.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 struct PointResult {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
@@ -81,4 +81,4 @@ struct FrameResult {
 // (layout, bone table) is or may be new, so a consumer that reads frames of several sources notices every change.
 uint32_t next_definition_counter();
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -6,7 +6,7 @@
 
 #include "core/frame.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 class FrameSink {
  public:
@@ -19,4 +19,4 @@ class FrameSink {
   virtual uint32_t receivers() const { return 0; }
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -5,7 +5,7 @@
 
 #include "core/error.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 using Alt = std::vector<std::vector<int>>;
@@ -191,4 +191,4 @@ bool layout_from_name(const std::string& name, LayoutId* out) {
   return false;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

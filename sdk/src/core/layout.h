@@ -6,7 +6,7 @@
 
 #include "core/skeleton.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 enum class LayoutId : int { automatic = 0, body25 = 1, body25b = 2, coco17 = 3, halpe26 = 4, blazepose33 = 5 };
 
@@ -21,6 +21,18 @@ struct KeypointLayout {
   std::vector<std::pair<int, int>> mirror_pairs;
 };
 
+// The one rule deriving a skeleton joint from keypoints (the solver, the motion readers, calibration and the crops all
+// use it): the first of `alternatives` whose keypoints are all `present(k)`; the joint is their mean. Null if none is.
+template <class Present>
+const std::vector<int>* first_present_alternative(const std::vector<std::vector<int>>& alternatives, Present present) {
+  for (const std::vector<int>& alternative : alternatives) {
+    bool all = !alternative.empty();
+    for (int k : alternative) all = all && present(k);
+    if (all) return &alternative;
+  }
+  return nullptr;
+}
+
 const KeypointLayout& layout(LayoutId id);  // throws Error for automatic/unknown ids
 const std::vector<LayoutId>& all_layouts();
 // AUTO resolution from a keypoint count: 25 -> BODY_25, 17 -> COCO_17, 26 -> HALPE_26, 33 -> BLAZEPOSE_33.
@@ -28,4 +40,4 @@ LayoutId layout_for_count(size_t keypoint_count);
 // Case-insensitive; accepts "COCO" for COCO_17, "BODY25B" without underscore, etc.
 bool layout_from_name(const std::string& name, LayoutId* out);
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -4,7 +4,7 @@
 
 #include "core/redact.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 std::mutex g_mutex;
@@ -24,4 +24,4 @@ void log(LogLevel level, const std::string& message) {
   if (g_sink && level >= g_min) g_sink(level, redact_credentials(message).c_str());
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -1,6 +1,6 @@
 #include "core/parallel.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 WorkerPool::WorkerPool(unsigned threads) {
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
@@ -66,4 +66,4 @@ void WorkerPool::parallel_for(size_t n, const std::function<void(size_t)>& fn) {
   job_ = nullptr;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -6,7 +6,7 @@
 #include <thread>
 #include <vector>
 
-namespace octocap {
+namespace octocap::internal {
 
 class WorkerPool {
  public:
@@ -35,4 +35,4 @@ class WorkerPool {
   bool stop_ = false;
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace octocap {
+namespace octocap::internal {
 
 Person2D interpolate_person(const Person2D& a, const Person2D& b, double w, double min_conf) {
   if (a.empty() || b.empty() || a.size() != b.size()) return w < 0.5 ? a : b;
@@ -17,4 +17,4 @@ Person2D interpolate_person(const Person2D& a, const Person2D& b, double w, doub
   return out;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -3,7 +3,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 
-namespace octocap {
+namespace octocap::internal {
 
 ViewRay make_view_ray(const Camera& cam, int view, const Eigen::Vector2d& pixel, double confidence) {
   ViewRay r;
@@ -40,4 +40,4 @@ bool triangulate_dlt(const Calibration& calib, const std::vector<ViewRay>& rays,
   return out.allFinite();
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -6,7 +6,7 @@
 
 #include "core/camera.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 // One view's detection of one keypoint, prepared once per frame: the undistorted ray and its pixel.
 struct ViewRay {
@@ -24,4 +24,4 @@ ViewRay make_view_ray(const Camera& cam, int view, const Eigen::Vector2d& pixel,
 bool triangulate_dlt(const Calibration& calib, const std::vector<ViewRay>& rays, uint64_t mask, bool weighted,
                      Eigen::Vector3d& out);
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -2,7 +2,7 @@
 
 #include <cstring>
 
-namespace octocap {
+namespace octocap::internal {
 
 std::string redact_credentials(const std::string& text) {
   std::string out;
@@ -30,4 +30,4 @@ std::string redact_credentials(const std::string& text) {
   return out;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

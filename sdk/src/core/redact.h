@@ -4,10 +4,10 @@
 #pragma once
 #include <string>
 
-namespace octocap {
+namespace octocap::internal {
 
 // `text` with the password of every URL in it (scheme://user:password@host...) replaced by ***; the user name and
 // the rest stay, so that the message still says which camera.
 std::string redact_credentials(const std::string& text);
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -4,7 +4,7 @@
 #include <cmath>
 #include "core/skeleton.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 const std::array<const char*, kJointCount>& joint_names() {
   static const std::array<const char*, kJointCount> names = {
@@ -55,9 +55,9 @@ const std::array<Eigen::Vector3d, kBoneCount>& tpose_directions() {
   return dirs;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal
 
-namespace octocap {
+namespace octocap::internal {
 
 uint32_t next_definition_counter() {
   static std::atomic<uint32_t> counter{0};
@@ -66,4 +66,4 @@ uint32_t next_definition_counter() {
   return n;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

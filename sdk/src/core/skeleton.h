@@ -4,7 +4,7 @@
 #include <Eigen/Core>
 #include <array>
 
-namespace octocap {
+namespace octocap::internal {
 
 constexpr int kJointCount = 21;
 constexpr int kBoneCount = 17;
@@ -39,4 +39,4 @@ const std::array<BoneDef, kBoneCount>& bone_table();
 // Rest directions of every bone, unit length.
 const std::array<Eigen::Vector3d, kBoneCount>& tpose_directions();
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -5,7 +5,7 @@
 #include <limits>
 #include <vector>
 
-namespace octocap {
+namespace octocap::internal {
 
 // Element floor(p * n) of the sorted samples (p in [0, 1]), found by partial reordering of `v`; `empty` when v holds
 // none.
@@ -24,4 +24,4 @@ inline constexpr double kInf = std::numeric_limits<double>::infinity();
 // The median, or kInf when there is nothing to take it of.
 inline double median_or_inf(std::vector<double>& v) { return median_in_place(v, kInf); }
 
-}  // namespace octocap
+}  // namespace octocap::internal

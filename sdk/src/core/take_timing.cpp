@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace octocap {
+namespace octocap::internal {
 
 bool times_increase(const std::vector<double>& times_s) {
   for (size_t i = 0; i < times_s.size(); ++i)
@@ -51,4 +51,4 @@ std::vector<Resampled> resample_plan(const std::vector<double>& times_s, double 
   return plan;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace octocap {
+namespace octocap::internal {
 
 // Times (seconds) that strictly increase: the only ones that say when frames happened.
 bool times_increase(const std::vector<double>& times_s);
@@ -31,4 +31,4 @@ std::vector<Resampled> resample_plan(const std::vector<double>& times_s, double 
 // output periods at slow rates.
 double max_interpolated_gap_s(double rate_hz);
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -6,7 +6,7 @@
 
 #include "core/error.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 void expect(bool ok, const Tensor& t, const std::string& kind, const std::string& expected) {
@@ -229,4 +229,4 @@ std::vector<DetectedPerson> decode_pose(const ModelCard& card, const std::vector
   throw Error(Errc::internal, "unknown output kind");
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

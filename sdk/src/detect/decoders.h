@@ -9,7 +9,7 @@
 #include "detect/model_card.h"
 #include "core/person2d.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 struct Tensor {
   std::vector<int64_t> shape;
@@ -44,4 +44,4 @@ double parabolic_offset(double left, double centre, double right);
 // The box around a person's keypoints of at least `min_confidence`; empty when there are fewer than two.
 Rect keypoint_box(const Person2D& person, double min_confidence);
 
-}  // namespace octocap
+}  // namespace octocap::internal

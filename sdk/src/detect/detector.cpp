@@ -24,7 +24,7 @@
 #define OCTOCAP_DEFAULT_MODELS_DIR "models"
 #endif
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -499,4 +499,4 @@ std::vector<std::vector<DetectedPerson>> Detector::detect(const std::vector<Imag
   return result;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

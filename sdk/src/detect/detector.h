@@ -17,16 +17,18 @@
 #include "detect/person_pick.h"
 #include "detect/pose_network.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 enum class DetectMode : int { per_view = 0, mosaic = 1, crop = 2 };
 
 struct DetectorConfig {
   std::string model;  // a path to a .onnx (its card beside it) or a shipped model's name; empty: the mode's default
-  DetectMode mode = DetectMode::crop;
+  DetectMode mode = DetectMode::crop;  // the most accurate of the three at per-view cost (README "Detecting")
   PersonPick pick = PersonPick::all;
   int threads = 0;           // inference threads per view; 0 = the back end's default (all cores / parallel views)
-  int parallel_views = 0;    // views inferred at once (per view and crop); 0 = as many as cores
+  // Views inferred at once (per view and crop); 0 = as many as cores: every session has 2+ cameras (README "From
+  // images").
+  int parallel_views = 0;
   int mosaic_tile = 256;     // mosaic cell height in pixels (the width follows the views' aspect)
   size_t max_people = 4;     // per view, for PersonPick::all (and the crops of several people)
   double min_confidence = 0.3;
@@ -40,7 +42,7 @@ struct DetectorConfig {
   // no last picture, a track that lost half its keypoints) are detected anyway; of the rest, the views detected
   // longest ago. 0: every view every frame.
   int views_per_frame = 0;
-  Device device = Device::cpu;
+  Device device = Device::cpu;  // a GPU only when asked: AUTO would load CUDA libraries a CPU user never needs
   // Also load the model card's lighter model (its "lighter" key), for a caller that trades accuracy for time set by
   // set (the live engine's rate governor, use_network()). Per view and crop only.
   bool load_lighter = false;
@@ -149,4 +151,4 @@ class Detector {
   DetectTimings timings_;
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -5,7 +5,7 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/video/tracking.hpp>
 
-namespace octocap {
+namespace octocap::internal {
 
 struct FlowTracker::Pictures {
   cv::Mat previous, current;  // grey, downscaled
@@ -106,4 +106,4 @@ std::vector<DetectedPerson> FlowTracker::track(const std::vector<DetectedPerson>
   return moved;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -10,7 +10,7 @@
 #include "detect/decoders.h"
 #include "detect/image.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 class FlowTracker {
  public:
@@ -49,4 +49,4 @@ class FlowTracker {
   std::unique_ptr<Pictures> pictures_;
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -7,7 +7,7 @@
 
 #include "core/error.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 int bytes_per_pixel(PixelFormat f) {
   switch (f) {
@@ -105,4 +105,4 @@ void draw_letterboxed(const ImageView& image, const Rect& src_rect, const Rect& 
   }
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace octocap {
+namespace octocap::internal {
 
 enum class PixelFormat : int { rgb8 = 0, bgr8 = 1, rgba8 = 2 };
 
@@ -53,4 +53,4 @@ struct RgbCanvas {
 void draw_letterboxed(const ImageView& image, const Rect& src_rect, const Rect& dst_rect, const Letterbox& box,
                       RgbCanvas& canvas);
 
-}  // namespace octocap
+}  // namespace octocap::internal

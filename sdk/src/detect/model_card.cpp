@@ -5,7 +5,7 @@
 
 #include "core/error.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 using nlohmann::json;
@@ -113,4 +113,4 @@ ModelCard read_model_card(const std::string& path) {
   }
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

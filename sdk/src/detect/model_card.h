@@ -6,7 +6,7 @@
 
 #include "core/layout.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 enum class OutputKind : int { movenet, movenet_multipose, heatmap, simcc, yolo_pose, blazepose };
 enum class ElementType : int { int32, uint8, float32 };
@@ -38,4 +38,4 @@ ModelCard read_model_card(const std::string& path);
 std::string model_card_path(const std::string& model_path);
 const char* output_kind_name(OutputKind kind);
 
-}  // namespace octocap
+}  // namespace octocap::internal

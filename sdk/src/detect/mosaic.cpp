@@ -4,7 +4,7 @@
 
 #include "core/error.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 MosaicLayout plan_mosaic(const std::vector<ViewSize>& views, int tile_width, int tile_height) {
   if (views.empty()) throw Error(Errc::invalid_argument, "a mosaic needs at least one view");
@@ -66,4 +66,4 @@ std::vector<std::vector<DetectedPerson>> split_mosaic_people(const MosaicLayout&
   return per_view;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

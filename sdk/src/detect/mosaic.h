@@ -6,7 +6,7 @@
 #include "detect/decoders.h"
 #include "detect/image.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 struct MosaicTile {
   Rect cell;     // the tile in the mosaic
@@ -35,4 +35,4 @@ std::vector<std::vector<DetectedPerson>> split_mosaic_people(const MosaicLayout&
                                                              const std::vector<DetectedPerson>& people,
                                                              double min_confidence);
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -7,7 +7,7 @@
 #include "core/error.h"
 #include "detect/decoders.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 void check_input_size(const ModelCard& card, const RgbCanvas& canvas) {
   const int W = canvas.width, H = canvas.height;
@@ -70,4 +70,4 @@ InputTensor fill_input(const ModelCard& card, const RgbCanvas& canvas) {
   return t;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

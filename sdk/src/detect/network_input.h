@@ -8,7 +8,7 @@
 #include "detect/image.h"
 #include "detect/model_card.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 // Throws Error(invalid_argument) when the canvas's size does not suit the card (its size, or a multiple of
 // size_multiple for a dynamic model).
@@ -29,4 +29,4 @@ struct InputTensor {
 };
 InputTensor fill_input(const ModelCard& card, const RgbCanvas& canvas);
 
-}  // namespace octocap
+}  // namespace octocap::internal

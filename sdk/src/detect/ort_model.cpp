@@ -19,7 +19,7 @@
 #include <onnxruntime_cxx_api.h>
 #endif
 
-namespace octocap {
+namespace octocap::internal {
 
 #ifdef OCTOCAP_HAVE_ONNXRUNTIME
 namespace {
@@ -248,4 +248,4 @@ std::vector<Tensor> OrtModel::run(const RgbCanvas&) { return {}; }
 
 #endif
 
-}  // namespace octocap
+}  // namespace octocap::internal

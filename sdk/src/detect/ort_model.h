@@ -7,7 +7,7 @@
 
 #include "detect/pose_network.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 // "1.32.0" from the loaded library; throws Error(unsupported) when the library is older than the headers octocap
 // was built with (or the build has no ONNX Runtime).
@@ -36,4 +36,4 @@ class OrtModel final : public PoseNetwork {
   std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

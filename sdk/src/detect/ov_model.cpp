@@ -13,7 +13,7 @@
 #include <openvino/c/openvino.h>
 #endif
 
-namespace octocap {
+namespace octocap::internal {
 
 #ifdef OCTOCAP_HAVE_OPENVINO
 namespace {
@@ -208,4 +208,4 @@ std::vector<Tensor> OvModel::run(const RgbCanvas&) { return {}; }
 
 #endif
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -7,7 +7,7 @@
 
 #include "detect/pose_network.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 // "2026.4.0-..." from the loaded library; throws Error(unsupported) in a build without OpenVINO.
 std::string openvino_version();
@@ -37,4 +37,4 @@ class OvModel final : public PoseNetwork {
   std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 // Mean distance over keypoints both have with confidence; infinity when they share none.
@@ -50,4 +50,4 @@ void pick_people(std::vector<DetectedPerson>& people, PersonPick pick, const Per
   if (people.size() > keep) people.resize(keep);
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

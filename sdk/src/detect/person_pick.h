@@ -5,7 +5,7 @@
 
 #include "detect/decoders.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 enum class PersonPick : int {
   all = 0,             // every person (best score first): the session's cross-view selection decides
@@ -19,4 +19,4 @@ enum class PersonPick : int {
 void pick_people(std::vector<DetectedPerson>& people, PersonPick pick, const Person2D& hint, size_t max_people,
                  double min_confidence);
 
-}  // namespace octocap
+}  // namespace octocap::internal

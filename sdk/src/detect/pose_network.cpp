@@ -7,7 +7,7 @@
 #include "detect/ort_model.h"
 #include "detect/ov_model.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 const char* runtime_name(Runtime r) {
   switch (r) {
@@ -57,4 +57,4 @@ std::unique_ptr<PoseNetwork> load_pose_network(const std::string& path, const Mo
   return ort;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -9,7 +9,7 @@
 #include "detect/image.h"
 #include "detect/model_card.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 // The inference back end (octocap_runtime_t). automatic: OpenVINO on the CPU where the build has it (measured
 // faster at the same keypoints, README "Inference back ends"), ONNX Runtime for a GPU, a quantised model, or where
@@ -51,4 +51,4 @@ struct NetworkOptions {
 // precision), and what the back end throws for a missing or unfit model.
 std::unique_ptr<PoseNetwork> load_pose_network(const std::string& path, const ModelCard& card, const NetworkOptions& o);
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -5,22 +5,19 @@
 
 #include <opencv2/imgproc.hpp>
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 // The mean of the first alternative of `sources` whose keypoints are all confident.
 std::optional<std::pair<double, double>> joint(const Person2D& p, const std::vector<std::vector<int>>& sources,
                                                double min_confidence) {
-  for (const std::vector<int>& alt : sources) {
-    double x = 0, y = 0;
-    bool all = true;
-    for (int k : alt) {
-      if (k < 0 || static_cast<size_t>(k) >= p.size() || !(p[k].confidence >= min_confidence)) all = false;
-      else x += p[k].x, y += p[k].y;
-    }
-    if (all && !alt.empty()) return std::make_pair(x / alt.size(), y / alt.size());
-  }
-  return std::nullopt;
+  const std::vector<int>* alt = first_present_alternative(sources, [&](int k) {
+    return k >= 0 && static_cast<size_t>(k) < p.size() && p[k].confidence >= min_confidence;
+  });
+  if (!alt) return std::nullopt;
+  double x = 0, y = 0;
+  for (int k : *alt) x += p[k].x, y += p[k].y;
+  return std::make_pair(x / alt->size(), y / alt->size());
 }
 
 // Source -> crop frame: the offset from the centre turned back by the angle.
@@ -124,4 +121,4 @@ void draw_turned(const ImageView& image, const TurnedCrop& crop, RgbCanvas& canv
   }
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

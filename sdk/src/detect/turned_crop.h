@@ -9,7 +9,7 @@
 #include "core/person2d.h"
 #include "detect/image.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 struct TurnedCrop {
   double centre_x = 0, centre_y = 0;  // source pixels
@@ -28,4 +28,4 @@ TurnedCrop turned_crop_around(const Person2D& person, double angle, double aspec
 void draw_turned(const ImageView& image, const TurnedCrop& crop, RgbCanvas& canvas);
 void turned_to_source(const TurnedCrop& crop, int canvas_width, int canvas_height, double& x, double& y);
 
-}  // namespace octocap
+}  // namespace octocap::internal

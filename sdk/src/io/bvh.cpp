@@ -7,7 +7,7 @@
 
 #include "core/error.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 class Tokens {
@@ -160,4 +160,4 @@ BvhMotion read_bvh(const std::string& path) {
   return m;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

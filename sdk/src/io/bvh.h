@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-namespace octocap {
+namespace octocap::internal {
 
 struct BvhJoint {
   std::string name;          // end sites are named "<parent>_end"
@@ -28,4 +28,4 @@ struct BvhMotion {
 // Throws Error(io / parse) naming the file and line.
 BvhMotion read_bvh(const std::string& path);
 
-}  // namespace octocap
+}  // namespace octocap::internal

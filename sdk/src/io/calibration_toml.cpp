@@ -10,7 +10,7 @@
 
 #include "core/error.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 struct TableRef {
@@ -164,4 +164,4 @@ void write_calibration_toml(const Calibration& calib, const std::string& path) {
   if (!out) throw Error(Errc::io, path + ": write failed");
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

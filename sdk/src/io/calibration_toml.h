@@ -4,10 +4,10 @@
 
 #include "core/camera.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 // Throws Error(io) when the file cannot be read and Error(parse) naming the file, the table and the fault.
 Calibration read_calibration_toml(const std::string& path);
 void write_calibration_toml(const Calibration& calib, const std::string& path);
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -4,7 +4,7 @@
 
 #include "core/error.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 void write_calibration_opencv_yaml(const Calibration& calib, const std::string& path) {
   cv::FileStorage fs;
@@ -37,4 +37,4 @@ void write_calibration_opencv_yaml(const Calibration& calib, const std::string& 
   fs.release();
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -5,7 +5,7 @@
 
 #include "core/error.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 std::vector<std::filesystem::path> sorted_subdirectories(const std::string& directory) {
   std::error_code ec;
@@ -30,4 +30,4 @@ std::vector<std::string> sorted_files(const std::string& directory, const std::v
   return files;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-namespace octocap {
+namespace octocap::internal {
 
 // The sub-folders of `directory`, sorted by name (the order cameras are matched in). Throws Error(io) when
 // `directory` is not a folder.
@@ -14,4 +14,4 @@ std::vector<std::filesystem::path> sorted_subdirectories(const std::string& dire
 // sorted by name (the order pictures are taken in); empty when there are none or `directory` is not a folder.
 std::vector<std::string> sorted_files(const std::string& directory, const std::vector<std::string>& extensions);
 
-}  // namespace octocap
+}  // namespace octocap::internal

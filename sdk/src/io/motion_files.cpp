@@ -11,7 +11,7 @@
 #include "core/error.h"
 #include "core/take_timing.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 // A line's cells between `sep`s; a trailing separator ends with an empty cell, a trailing CR is no part of it.
@@ -243,4 +243,4 @@ MotionTrack read_trc(const std::string& path) {
   return t;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-namespace octocap {
+namespace octocap::internal {
 
 // One frame: a position per marker; NaN where the marker was not solved.
 using MarkerFrame = std::vector<Eigen::Vector3d>;
@@ -63,4 +63,4 @@ double parse_rate(const std::string& cell, const std::string& where);
 // The rotation a Z-up world gets to become Y up: (x, y, z) -> (y, z, x).
 inline Eigen::Vector3d zup_to_yup(const Eigen::Vector3d& p) { return {p.y(), p.z(), p.x()}; }
 
-}  // namespace octocap
+}  // namespace octocap::internal

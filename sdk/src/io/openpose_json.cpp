@@ -13,7 +13,7 @@
 
 namespace fs = std::filesystem;
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 // BODY_25 and BODY_25B both have 25 keypoints. In BODY_25, keypoint 1 (neck) sits midway between 2 and 5
@@ -125,7 +125,7 @@ std::vector<std::vector<Person2D>> OpenPoseRecording::read_raw(size_t frame) con
   if (frame >= frame_count_)
     throw Error(Errc::invalid_argument, "frame " + std::to_string(frame) + " out of range (recording has " +
                                             std::to_string(frame_count_) + ")");
-  const size_t n = octocap::layout(layout_).keypoints.size();
+  const size_t n = octocap::internal::layout(layout_).keypoints.size();
   std::vector<std::vector<Person2D>> out;
   for (const auto& v : views_) out.push_back(read_openpose_file(v[frame], n));
   return out;
@@ -158,7 +158,7 @@ std::vector<std::vector<Person2D>> OpenPoseRecording::read_frame(size_t frame) c
   if (frame >= frame_count_)
     throw Error(Errc::invalid_argument, "frame " + std::to_string(frame) + " out of range (recording has " +
                                             std::to_string(frame_count_) + ")");
-  const size_t n = octocap::layout(layout_).keypoints.size();
+  const size_t n = octocap::internal::layout(layout_).keypoints.size();
   std::vector<std::vector<Person2D>> out(views_.size());
   for (size_t v = 0; v < views_.size(); ++v) {
     // This view's own frame for the first camera's frame `frame`; outside its take it saw nobody.
@@ -183,9 +183,9 @@ std::vector<std::vector<Person2D>> OpenPoseRecording::read_frame(size_t frame) c
   return out;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal
 
-namespace octocap {
+namespace octocap::internal {
 
 void write_openpose_file(const std::string& path, const std::vector<Person2D>& people) {
   std::string text = "{\"version\":1.3,\"people\":[";
@@ -207,4 +207,4 @@ void write_openpose_file(const std::string& path, const std::vector<Person2D>& p
   if (!out.flush()) throw Error(Errc::io, path + ": cannot write keypoint file");
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

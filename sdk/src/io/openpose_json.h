@@ -6,7 +6,7 @@
 #include "core/layout.h"
 #include "core/person2d.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 // Every person of one file. keypoint_count 0 accepts any count (all people must agree), else it is enforced.
 // Throws Error(io / parse) naming the file.
@@ -39,4 +39,4 @@ class OpenPoseRecording {
   std::vector<std::vector<Person2D>> read_raw(size_t frame) const;
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -7,7 +7,7 @@
 
 #include "core/error.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 void write_sync_toml(const std::string& path, const SyncFile& s) {
   toml::table offsets;
@@ -45,4 +45,4 @@ SyncFile read_sync_toml(const std::string& path) {
   return s;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

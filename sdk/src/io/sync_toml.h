@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace octocap {
+namespace octocap::internal {
 
 struct SyncFile {
   double rate_hz = 30;
@@ -18,4 +18,4 @@ void write_sync_toml(const std::string& path, const SyncFile& sync);
 // Throws Error(io / parse) naming the file and what is wrong (a missing table, a non-number, a bad rate).
 SyncFile read_sync_toml(const std::string& path);
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -12,7 +12,7 @@
 #include "core/log.h"
 #include "stream/keypoint_publisher.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 // Rates that divide a second into whole ticks, so that nodes choosing different ones still meet at common ticks.
@@ -211,4 +211,4 @@ void KeypointNode::run(Camera& cam) {
   }
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

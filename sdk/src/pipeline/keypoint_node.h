@@ -14,7 +14,7 @@
 #include "capture/feed_status.h"
 #include "detect/detector.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 class CameraFeed;
 class KeypointPublisher;
@@ -70,4 +70,4 @@ class KeypointNode {
   NodeStats stats_;
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -15,7 +15,7 @@
 #include "pipeline/live_recorder.h"
 #include "pipeline/rate_governor.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 constexpr size_t kLatencyWindow = 1000;
@@ -358,4 +358,4 @@ void LiveEngine::record(const std::vector<CapturedFrame>& frames, const std::vec
   recorder_->add(std::move(set));
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

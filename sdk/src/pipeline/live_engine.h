@@ -18,7 +18,7 @@
 #include "core/frame.h"
 #include "pipeline/session.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 class Feed;
 class RateGovernor;
@@ -139,4 +139,4 @@ class LiveEngine {
   double mean_interval_us_ = 0;
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -11,7 +11,7 @@
 
 namespace fs = std::filesystem;
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 // Sets with pictures waiting for the writer: a few, so that a slow disk costs pictures, not memory (four 1080p
@@ -150,4 +150,4 @@ void LiveRecorder::write(const Job& job) {
   if (!times_) throw Error(Errc::io, "cannot write " + (fs::path(dir_) / "timestamps.csv").string());
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -25,7 +25,7 @@
 #include "core/camera.h"
 #include "core/person2d.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 struct RecordedSet {
   int64_t time_us = 0;                         // the set's time
@@ -82,4 +82,4 @@ class LiveRecorder {
   std::string error_;
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

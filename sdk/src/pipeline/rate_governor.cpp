@@ -5,7 +5,7 @@
 
 #include "core/error.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 constexpr double kSmoothing = 0.3;         // weight of a new set's cost
@@ -113,4 +113,4 @@ bool RateGovernor::observe(double cost_ms, double wait_ms, int64_t now_us) {
   return false;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

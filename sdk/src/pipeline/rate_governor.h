@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace octocap {
+namespace octocap::internal {
 
 struct QualityRung {
   int network = 0;  // 0: the model named; 1: its card's lighter model
@@ -67,4 +67,4 @@ class RateGovernor {
   bool probing_ = false;              // the last change was a step up, not yet confirmed
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

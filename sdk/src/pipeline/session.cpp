@@ -19,7 +19,7 @@
 #include "solve/view_order.h"
 #include "solve/volume.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 // Cameras are mounted roughly upright: each one's image-down axis (+y in the camera) points to world down.
@@ -395,25 +395,22 @@ void Session::finish_person(PersonResult& person, PersonState& state, double dt)
   person.mean_reprojection_error_px = solved ? err / solved : 0;
 
   for (int j = 0; j < kJointCount; ++j) {
-    for (const auto& alternative : layout_->joint_sources[j]) {
-      bool all = true;
-      for (int k : alternative) all = all && person.keypoints[k].valid;
-      if (!all) continue;
-      PointResult out;
-      out.valid = true;
-      out.confidence = 1e9;
-      out.views_used = 1u << 31;
-      for (int k : alternative) {
-        const PointResult& r = person.keypoints[k];
-        out.position += r.position / static_cast<double>(alternative.size());
-        out.reprojection_error_px += r.reprojection_error_px / static_cast<double>(alternative.size());
-        out.confidence = std::min(out.confidence, r.confidence);
-        out.views_used = std::min(out.views_used, r.views_used);
-        out.view_mask |= r.view_mask;
-      }
-      person.joints[j] = out;
-      break;
+    const std::vector<int>* alternative = first_present_alternative(
+        layout_->joint_sources[j], [&](int k) { return person.keypoints[k].valid; });
+    if (!alternative) continue;
+    PointResult out;
+    out.valid = true;
+    out.confidence = 1e9;
+    out.views_used = 1u << 31;
+    for (int k : *alternative) {
+      const PointResult& r = person.keypoints[k];
+      out.position += r.position / static_cast<double>(alternative->size());
+      out.reprojection_error_px += r.reprojection_error_px / static_cast<double>(alternative->size());
+      out.confidence = std::min(out.confidence, r.confidence);
+      out.views_used = std::min(out.views_used, r.views_used);
+      out.view_mask |= r.view_mask;
     }
+    person.joints[j] = out;
   }
   SkeletonJoints rig_joints;
   for (int j = 0; j < kJointCount; ++j) {
@@ -440,4 +437,4 @@ void Session::publish() {
   for (auto& sink : sinks_) sink->publish(frame_);
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -20,7 +20,7 @@
 #include "solve/one_euro.h"
 #include "solve/person_tracks.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 class ViewOrderCheck;
 
@@ -175,4 +175,4 @@ class Session {
   bool solved_any_ = false;
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

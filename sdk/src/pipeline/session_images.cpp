@@ -7,7 +7,7 @@
 #include "core/error.h"
 #include "pipeline/session.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 void Session::remember_whole_people() {
   std::map<uint32_t, std::vector<Eigen::Vector3d>> kept;
@@ -145,4 +145,4 @@ bool Session::solve_images(const std::vector<ImageView>& images, int64_t timesta
   return solved;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 bool finite(const Eigen::Vector3d& v) { return v.allFinite(); }
@@ -254,4 +254,4 @@ double twist_angle(const Eigen::Quaterniond& q, const Eigen::Vector3d& axis) {
   return 2.0 * std::atan2(p, q.w());
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -8,7 +8,7 @@
 #include "core/frame.h"
 #include "core/skeleton.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 using SkeletonJoints = std::array<Eigen::Vector3d, kJointCount>;  // rig frame; NaN where missing
 
@@ -56,4 +56,4 @@ Eigen::Matrix3d naive_bone_frame(const Eigen::Vector3d& direction, const Eigen::
 // Twist angle (radians, in (-pi, pi]) of rotation q about `axis` (swing-twist decomposition).
 double twist_angle(const Eigen::Quaterniond& q, const Eigen::Vector3d& axis);
 
-}  // namespace octocap
+}  // namespace octocap::internal

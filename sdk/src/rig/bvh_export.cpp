@@ -8,7 +8,7 @@
 
 #include "core/error.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 constexpr double kCm = 100.0;
@@ -98,4 +98,4 @@ void write_bvh(const std::string& path, const std::vector<SkeletonPose>& frames,
   if (!out) throw Error(Errc::io, path + ": write failed");
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

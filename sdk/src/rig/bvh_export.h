@@ -7,7 +7,7 @@
 
 #include "rig/bone_solver.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 // BVH joint name of each octocap bone (Mixamo/Unity-style names, so retargeting tools map them).
 const char* bvh_joint_name(int bone);
@@ -15,4 +15,4 @@ const char* bvh_joint_name(int bone);
 // Writes `frames` (missing bones keep their previous rotation; the first frame's missing ones are identity).
 void write_bvh(const std::string& path, const std::vector<SkeletonPose>& frames, double rate_hz);
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -1,6 +1,6 @@
 #include "rig/engine_frames.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 Eigen::Vector3d convert_position(const Eigen::Vector3d& p, CoordFrame frame) {
   switch (frame) {
@@ -22,4 +22,4 @@ Eigen::Quaterniond convert_rotation(const Eigen::Quaterniond& q, CoordFrame fram
   return q;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

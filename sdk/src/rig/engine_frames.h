@@ -2,7 +2,7 @@
 #pragma once
 #include <Eigen/Geometry>
 
-namespace octocap {
+namespace octocap::internal {
 
 enum class CoordFrame : int { rig = 0, unity = 1, godot = 2 };
 
@@ -12,4 +12,4 @@ enum class CoordFrame : int { rig = 0, unity = 1, godot = 2 };
 Eigen::Vector3d convert_position(const Eigen::Vector3d& p, CoordFrame frame);
 Eigen::Quaterniond convert_rotation(const Eigen::Quaterniond& q, CoordFrame frame);
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -10,7 +10,7 @@
 #include "io/bvh.h"
 #include "io/motion_files.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -198,17 +198,12 @@ SkeletonJoints joints_from_keypoints(const KeypointLayout& l, const std::vector<
   SkeletonJoints s;
   for (int j = 0; j < kJointCount; ++j) {
     s[j] = Eigen::Vector3d::Constant(kNaN);
-    for (const auto& alternative : l.joint_sources[j]) {
-      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-      bool all = true;
-      for (int k : alternative) {
-        all = all && static_cast<size_t>(k) < kp.size() && kp[k].allFinite();
-        if (all) sum += kp[k];
-      }
-      if (!all) continue;
-      s[j] = sum / static_cast<double>(alternative.size());
-      break;
-    }
+    const std::vector<int>* alternative = first_present_alternative(
+        l.joint_sources[j], [&](int k) { return static_cast<size_t>(k) < kp.size() && kp[k].allFinite(); });
+    if (!alternative) continue;
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (int k : *alternative) sum += kp[k];
+    s[j] = sum / static_cast<double>(alternative->size());
   }
   return s;
 }
@@ -224,4 +219,4 @@ SkeletonMotion load_skeleton_motion(const std::string& path) {
   return m;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

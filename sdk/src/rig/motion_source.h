@@ -7,7 +7,7 @@
 #include "core/layout.h"
 #include "rig/bone_solver.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 // Frames 1 / rate_hz apart: a file whose frames came unevenly (a live take's CSV says when each set happened) is
 // resampled onto that grid at its mean rate, joints interpolated (missing across a stretch of over a quarter second).
@@ -24,4 +24,4 @@ SkeletonMotion load_skeleton_motion(const std::string& path);
 // The skeleton's joints from one frame of layout keypoints (the layout's joint sources; NaN when absent).
 SkeletonJoints joints_from_keypoints(const KeypointLayout& layout, const std::vector<Eigen::Vector3d>& keypoints);
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -9,7 +9,7 @@
 #include "core/take_timing.h"
 #include "rig/bvh_export.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 const Eigen::Vector3d kMissing = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
 constexpr int64_t kNoTime = std::numeric_limits<int64_t>::min();
@@ -167,4 +167,4 @@ void MotionWriter::close() const {
   }
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

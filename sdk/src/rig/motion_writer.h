@@ -14,7 +14,7 @@
 #include "core/layout.h"
 #include "io/motion_files.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 enum class MotionFormat : int { trc = 0, csv = 1, bvh = 2, csv_people = 3 };
 
@@ -62,4 +62,4 @@ class MotionWriter {
   std::unique_ptr<CsvAppender> journal_;
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

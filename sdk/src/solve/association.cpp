@@ -6,7 +6,7 @@
 #include "core/stats.h"
 #include "solve/view_agreement.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 // The body's place: the median of its known keypoints per axis (robust to a stray keypoint).
@@ -207,4 +207,4 @@ std::vector<PersonCluster> associate_people(const Calibration& calib, const std:
   return a.take();
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -6,7 +6,7 @@
 #include "core/camera.h"
 #include "core/person2d.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 struct AssociationParams {
   double min_confidence = 0.3;
@@ -36,4 +36,4 @@ std::vector<PersonCluster> associate_people(const Calibration& calib, const std:
                                             const std::vector<std::vector<Eigen::Vector3d>>& priors,
                                             const AssociationParams& params);
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -1,6 +1,6 @@
 #include "solve/observation.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 void score_point(const Calibration& calib, const std::vector<ViewRay>& rays, uint64_t mask, PointResult& r) {
   double err = 0, conf = 0;
@@ -18,4 +18,4 @@ void score_point(const Calibration& calib, const std::vector<ViewRay>& rays, uin
   r.confidence = n ? conf / n : 0;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

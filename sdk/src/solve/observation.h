@@ -8,9 +8,9 @@
 #include "core/frame.h"
 #include "core/rays.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 // Fills views_used / reprojection error / confidence of `r` from the views in `mask`.
 void score_point(const Calibration& calib, const std::vector<ViewRay>& rays, uint64_t mask, PointResult& r);
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 double alpha(double cutoff_hz, double dt) {
@@ -29,4 +29,4 @@ Eigen::Vector3d OneEuroFilter3::filter(const Eigen::Vector3d& x, double dt, doub
   return x_prev_;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -2,7 +2,7 @@
 #pragma once
 #include <Eigen/Core>
 
-namespace octocap {
+namespace octocap::internal {
 
 class OneEuroFilter3 {
  public:
@@ -19,4 +19,4 @@ class OneEuroFilter3 {
   Eigen::Vector3d x_prev_ = Eigen::Vector3d::Zero(), dx_prev_ = Eigen::Vector3d::Zero();
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

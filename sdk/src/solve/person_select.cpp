@@ -7,7 +7,7 @@
 #include "core/stats.h"
 #include "solve/view_agreement.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 double mean_confidence(const Person2D& p) {
@@ -204,4 +204,4 @@ std::vector<int> select_people(const Calibration& calib, const std::vector<std::
   return best_combination(calib, people, std::vector<int>(V, -1), params);
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -6,7 +6,7 @@
 #include "core/person2d.h"
 #include "solve/observation.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 struct PersonSelectParams {
   double min_confidence = 0.3;
@@ -20,4 +20,4 @@ struct PersonSelectParams {
 std::vector<int> select_people(const Calibration& calib, const std::vector<std::vector<Person2D>>& people,
                                const std::vector<Eigen::Vector3d>& previous, const PersonSelectParams& params);
 
-}  // namespace octocap
+}  // namespace octocap::internal

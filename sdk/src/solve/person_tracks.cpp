@@ -7,7 +7,7 @@
 
 #include "core/stats.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -149,4 +149,4 @@ std::vector<uint32_t> PersonTracks::update(const std::vector<std::vector<Eigen::
   return ids;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -7,7 +7,7 @@
 
 #include "core/layout.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 struct TrackParams {
   double prior_hold_s = 0.5;   // a track missing longer than this stops guiding the association
@@ -53,4 +53,4 @@ class PersonTracks {
   uint32_t next_id_ = 1;
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

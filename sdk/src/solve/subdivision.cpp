@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 struct Cube {
@@ -200,4 +200,4 @@ PointResult solve_subdivision(const Calibration& calib, const std::vector<ViewRa
   return result;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -5,7 +5,7 @@
 
 #include "solve/observation.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 struct SubdivisionParams {
   int sigma = 0;             // supporting views a cube needs (already resolved from the config)
@@ -32,4 +32,4 @@ bool hull_contains_detection(const Camera& cam, const Eigen::AlignedBox3d& cube,
 PointResult solve_subdivision(const Calibration& calib, const std::vector<ViewRay>& rays,
                               const SubdivisionParams& params);
 
-}  // namespace octocap
+}  // namespace octocap::internal

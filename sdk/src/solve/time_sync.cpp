@@ -8,7 +8,7 @@
 #include "core/error.h"
 #include "core/stats.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 constexpr size_t kMinPairs = 30;  // fewer shared keypoints than this cannot place a camera in time
@@ -172,4 +172,4 @@ SyncEstimate estimate_recording_offsets(const Calibration& calib, const OpenPose
   return estimate_time_offsets(calib, frames, o);
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

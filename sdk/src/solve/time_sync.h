@@ -11,7 +11,7 @@
 #include "core/person2d.h"
 #include "io/openpose_json.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 struct SyncOptions {
   double max_offset_frames = 120;  // searched on either side
@@ -35,4 +35,4 @@ SyncEstimate estimate_time_offsets(const Calibration& calib,
 SyncEstimate estimate_recording_offsets(const Calibration& calib, const OpenPoseRecording& recording,
                                         const SyncOptions& options);
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -3,7 +3,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 // Largest reprojection error (px) over the views in mask; infinity if the point is behind a camera.
@@ -68,4 +68,4 @@ PointResult solve_triangulation(const Calibration& calib, const std::vector<View
   return result;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

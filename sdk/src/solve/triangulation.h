@@ -2,7 +2,7 @@
 #pragma once
 #include "solve/observation.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 struct TriangulationParams {
   int min_views = 2;
@@ -14,4 +14,4 @@ struct TriangulationParams {
 PointResult solve_triangulation(const Calibration& calib, const std::vector<ViewRay>& rays,
                                 const TriangulationParams& params);
 
-}  // namespace octocap
+}  // namespace octocap::internal

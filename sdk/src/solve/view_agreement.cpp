@@ -6,7 +6,7 @@
 #include "core/stats.h"
 #include "solve/triangulation.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 double distance_to_pose(const Camera& cam, const Person2D& person, const std::vector<Eigen::Vector3d>& pose,
                         double min_conf) {
@@ -70,4 +70,4 @@ void grow_by_nearest(const Calibration& calib, const std::vector<std::vector<Per
   }
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

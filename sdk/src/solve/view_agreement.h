@@ -6,7 +6,7 @@
 #include "core/camera.h"
 #include "core/person2d.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 // Median pixel distance between a person's confident keypoints and the projection of known 3D keypoints (NaN where
 // unknown); infinity with fewer than 3 keypoints to compare.
@@ -26,4 +26,4 @@ void grow_by_nearest(const Calibration& calib, const std::vector<std::vector<Per
                      const std::vector<std::vector<int>>& cands, double min_conf, double max_px,
                      std::vector<int>& choice);
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <numeric>
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 // People compared per view: several people multiply the work by this cubed; the first two are enough to tell.
@@ -208,4 +208,4 @@ void ViewOrderCheck::decide() {
   verdict_ += shares;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

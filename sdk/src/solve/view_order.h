@@ -14,7 +14,7 @@
 #include "core/camera.h"
 #include "core/person2d.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 class ViewOrderCheck {
  public:
@@ -58,4 +58,4 @@ class ViewOrderCheck {
   double best_share_ = 0, given_share_ = 0;
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

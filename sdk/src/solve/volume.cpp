@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace octocap {
+namespace octocap::internal {
 
 Eigen::AlignedBox3d derive_capture_volume(const Calibration& calib, double max_range) {
   Eigen::AlignedBox3d rig;
@@ -33,4 +33,4 @@ Eigen::AlignedBox3d derive_capture_volume(const Calibration& calib, double max_r
   return Eigen::AlignedBox3d(seen.min() - step, seen.max() + step);
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -4,10 +4,10 @@
 
 #include "core/camera.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 // The bounding box of the space seen by at least two cameras (all of them with two cameras), within
 // `max_range` metres of the rig, sampled on a grid. Empty when the cameras share no view.
 Eigen::AlignedBox3d derive_capture_volume(const Calibration& calib, double max_range = 8.0);
 
-}  // namespace octocap
+}  // namespace octocap::internal

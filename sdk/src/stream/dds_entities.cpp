@@ -2,7 +2,7 @@
 
 #include "core/error.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 dds_entity_t check_dds(dds_entity_t rc, const char* what) {
   if (rc < 0) throw Error(Errc::io, std::string("DDS: ") + what + " failed: " + dds_strretcode(rc));
@@ -48,4 +48,4 @@ dds_qos_t* keypoints_qos() {
   return q;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

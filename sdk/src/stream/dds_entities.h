@@ -6,7 +6,7 @@
 
 #include "stream/stream_config.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 // Owns a participant; deleting it deletes every entity created under it.
 class DdsParticipant {
@@ -31,4 +31,4 @@ dds_qos_t* keypoints_qos();
 // Throws Error(io) naming what failed when rc < 0.
 dds_entity_t check_dds(dds_entity_t rc, const char* what);
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -5,7 +5,7 @@
 #include "stream/dds_entities.h"
 #include "stream/wire_convert.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 struct DdsPublisher::Impl {
   DdsParticipant participant;
@@ -106,4 +106,4 @@ void DdsPublisher::run() {
   }
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -11,7 +11,7 @@
 #include "core/frame_sink.h"
 #include "stream/stream_config.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 class DdsPublisher : public FrameSink {
  public:
@@ -43,4 +43,4 @@ class DdsPublisher : public FrameSink {
   std::thread thread_;
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

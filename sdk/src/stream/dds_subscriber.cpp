@@ -5,7 +5,7 @@
 #include "stream/dds_entities.h"
 #include "stream/wire_convert.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 struct DdsSubscriber::Impl {
   DdsParticipant participant;
@@ -72,7 +72,7 @@ void DdsSubscriber::take_definitions() {
 
 void DdsSubscriber::guess_layout(uint32_t keypoint_count) {
   // The definition arrives reliably but may trail the first poses; until then, guess by count.
-  if (stats_.has_definition || keypoint_count == octocap::layout(layout_).keypoints.size()) return;
+  if (stats_.has_definition || keypoint_count == octocap::internal::layout(layout_).keypoints.size()) return;
   try {
     const LayoutId guess = layout_for_count(keypoint_count);
     if (guess != layout_ || local_definition_ == 0) local_definition_ = next_definition_counter();
@@ -161,4 +161,4 @@ bool DdsSubscriber::take_next(int timeout_ms) {
   }
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

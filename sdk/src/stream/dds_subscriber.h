@@ -7,7 +7,7 @@
 #include "core/frame.h"
 #include "stream/stream_config.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 struct StreamStats {
   uint64_t frames_received = 0;
@@ -51,4 +51,4 @@ class DdsSubscriber {
   uint32_t definition_source_ = 0;  // source of the definition in use
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

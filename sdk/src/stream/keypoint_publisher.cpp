@@ -3,7 +3,7 @@
 #include "core/log.h"
 #include "stream/dds_entities.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 struct KeypointPublisher::Impl {
   DdsParticipant participant;
@@ -37,4 +37,4 @@ uint32_t KeypointPublisher::matched_readers() const {
   return st.current_count;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -7,7 +7,7 @@
 
 #include "stream/keypoint_wire.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 class KeypointPublisher {
  public:
@@ -26,4 +26,4 @@ class KeypointPublisher {
   std::mutex mutex_;  // the write buffers
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -5,7 +5,7 @@
 
 #include "core/error.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 constexpr size_t kViewPeopleBound = 64, kPersonKeypointsBound = 160, kNameBytes = 31;
@@ -103,4 +103,4 @@ bool read_view_keypoints(const octocap_wire_ViewKeypoints& in, RemoteView& out, 
   return true;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -8,7 +8,7 @@
 #include "core/person2d.h"
 #include "octocap_stream.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 struct RemoteView {
   std::string node, camera;
@@ -34,4 +34,4 @@ void fill_view_keypoints(const RemoteView& view, ViewKeypointsBuffers& out);
 // Checks a received sample (version, known layout, its keypoint count, sizes, finite numbers); false with the reason.
 bool read_view_keypoints(const octocap_wire_ViewKeypoints& in, RemoteView& out, std::string& why);
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -9,7 +9,7 @@
 #include "core/log.h"
 #include "stream/dds_entities.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 constexpr size_t kDelayWindow = 256;
@@ -171,4 +171,4 @@ void RemoteFeed::check_silence(int64_t now_us) {
   log(LogLevel::warning, "camera '" + spec_.text + "': " + status_.last_error + ", waiting for its node");
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -16,7 +16,7 @@
 #include "capture/feed.h"
 #include "stream/keypoint_wire.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 class RemoteFeed;
 
@@ -74,4 +74,4 @@ class RemoteFeed : public Feed {
   size_t delay_next_ = 0;
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <string>
 
-namespace octocap {
+namespace octocap::internal {
 
 // live: BEST_EFFORT, VOLATILE, KEEP_LAST 1 - engines want the newest pose, never an old one late.
 // record: RELIABLE, TRANSIENT_LOCAL, KEEP_LAST history_depth - every frame arrives; a late joiner gets the
@@ -19,4 +19,4 @@ struct StreamConfig {
   bool several_people = false;    // publisher: everyone on "<topic>_people", not the first person on "<topic>_pose"
 };
 
-}  // namespace octocap
+}  // namespace octocap::internal

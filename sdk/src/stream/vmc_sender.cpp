@@ -8,7 +8,7 @@
 #include "core/log.h"
 #include "rig/engine_frames.h"
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 const char* const kUnityNames[kBoneCount] = {
@@ -158,4 +158,4 @@ void VmcSender::send(const FrameResult& frame) {
   }
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

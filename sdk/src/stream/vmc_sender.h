@@ -12,7 +12,7 @@
 #include "core/frame.h"
 #include "core/frame_sink.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 constexpr uint16_t kVmcDefaultPort = 39539;
 
@@ -37,4 +37,4 @@ class VmcSender : public FrameSink {
 // Unity HumanBodyBones name of each octocap bone (the engine bone at the octocap bone's head joint).
 const char* unity_bone_name(int bone);
 
-}  // namespace octocap
+}  // namespace octocap::internal

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstring>
 
-namespace octocap {
+namespace octocap::internal {
 namespace {
 
 void to_wire(const PointResult& r, octocap_wire_PointSample& s) {
@@ -277,4 +277,4 @@ void fill_definition(LayoutId layout_id, uint32_t source_id, uint32_t change_cou
   s.bones._release = false;
 }
 
-}  // namespace octocap
+}  // namespace octocap::internal

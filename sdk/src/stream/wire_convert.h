@@ -6,7 +6,7 @@
 #include "octocap_stream.h"
 #include "core/frame.h"
 
-namespace octocap {
+namespace octocap::internal {
 
 // Owns the buffers a wire Pose points into, so a sample can be written without allocations per frame
 // once warmed up.
@@ -43,4 +43,4 @@ struct DefinitionBuffers {
 };
 void fill_definition(LayoutId layout, uint32_t source_id, uint32_t change_counter, DefinitionBuffers& out);
 
-}  // namespace octocap
+}  // namespace octocap::internal
