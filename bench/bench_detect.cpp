@@ -97,6 +97,15 @@ std::vector<octocap_image_t> views_of(const std::vector<cv::Mat>& images, size_t
   return v;
 }
 
+// The last solve's layout keypoints (person 0); all invalid when nobody was solved.
+void last_keypoints(const octocap_session_t* s, octocap_joint_t* out, uint32_t capacity) {
+  for (uint32_t k = 0; k < capacity; ++k) out[k].valid = 0;
+  octocap_frame_t* f = nullptr;
+  uint32_t n = 0;
+  if (octocap_session_get_frame(s, &f) == OCTOCAP_OK) octocap_frame_get_keypoints3d(f, 0, out, capacity, &n);
+  octocap_frame_release(f);
+}
+
 double median(std::vector<double> v) {
   if (v.empty()) return NAN;
   std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
@@ -178,8 +187,7 @@ void accuracy(const std::string& only = "") {
       octocap_session_detect_info(s, &info);
       detect_ms += info.total_ms;
       if (r != OCTOCAP_OK) continue;
-      uint32_t n = 0;
-      octocap_session_get_keypoints3d(s, joints.data(), K, &n);
+      last_keypoints(s, joints.data(), K);
       for (uint32_t k = 0; k < K; ++k) {
         const bool foot = is_foot(octocap_layout_keypoint_name(p.layout, k));
         body[k] = joints[k], feet[k] = joints[k];
@@ -243,8 +251,7 @@ void crop_gap() {
         ++detected;
         if (octocap_session_solve_images(s, views.data(), 4, static_cast<int64_t>(f) * 16667) != OCTOCAP_OK) continue;
         octocap_joint_t j[17];
-        uint32_t n = 0;
-        octocap_session_get_keypoints3d(s, j, 17, &n);
+        last_keypoints(s, j, 17);
         score.add(static_cast<size_t>(f), j);
       }
       std::vector<double> dist;

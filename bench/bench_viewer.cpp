@@ -40,7 +40,13 @@ int main() {
   octocap_motion_open(motion.c_str(), &m);
   octocap_bone_pose_t bones[OCTOCAP_BONE_COUNT];
   uint32_t n = 0;
-  octocap_motion_bones(m, 300, OCTOCAP_FRAME_RIG, bones, OCTOCAP_BONE_COUNT, &n);
+  octocap_frame_t* frame = nullptr;
+  if (octocap_motion_get_frame(m, 300, &frame) != OCTOCAP_OK ||
+      octocap_frame_get_bones(frame, 0, OCTOCAP_FRAME_RIG, bones, OCTOCAP_BONE_COUNT, &n) != OCTOCAP_OK) {
+    std::fprintf(stderr, "bench_viewer: %s: %s\n", motion.c_str(), octocap_last_error());
+    return 1;
+  }
+  octocap_frame_release(frame);
   octocap_motion_destroy(m);
   const Retargeter retarget(c, scene.bone_map());
   const auto skin = skin_matrices(c, retarget.pose(bones));

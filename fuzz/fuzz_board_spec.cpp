@@ -6,9 +6,10 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {
-    const octocap::BoardSpec b = octocap::parse_board(std::string(reinterpret_cast<const char*>(data), size));
+    const octocap::internal::BoardSpec b =
+        octocap::internal::parse_board(std::string(reinterpret_cast<const char*>(data), size));
     if (b.cols < 2 || b.rows < 2 || !(b.square_m > 0)) __builtin_trap();  // accepted means usable
-  } catch (const octocap::Error&) {
+  } catch (const octocap::internal::Error&) {
   }
   return 0;
 }

@@ -6,8 +6,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string path = fuzz::write_input(data, size, ".json");
   try {
-    octocap::read_model_card(path);
-  } catch (const octocap::Error&) {
+    octocap::internal::read_model_card(path);
+  } catch (const octocap::internal::Error&) {
   }
   return 0;
 }

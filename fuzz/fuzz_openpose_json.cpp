@@ -6,8 +6,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string path = fuzz::write_input(data, size, ".json");
   try {
-    for (size_t count : {size_t{0}, size_t{25}}) octocap::read_openpose_file(path, count);
-  } catch (const octocap::Error&) {
+    for (size_t count : {size_t{0}, size_t{25}}) octocap::internal::read_openpose_file(path, count);
+  } catch (const octocap::internal::Error&) {
   }
   return 0;
 }

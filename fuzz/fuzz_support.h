@@ -1,5 +1,5 @@
 // What every fuzz target shares: the input written to a file (the readers take paths), and the rule that an
-// octocap::Error (a clear refusal) is a correct answer while anything else escaping is a finding.
+// octocap::internal::Error (a clear refusal) is a correct answer while anything else escaping is a finding.
 #pragma once
 #include <unistd.h>
 

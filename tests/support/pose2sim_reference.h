@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/axes.h"
 #include "io/motion_files.h"
 #include "octocap/octocap.h"
 

@@ -31,6 +31,7 @@ namespace Octocap
         }
 
         /// <summary>The skeleton joints (JointId) of a frame, rig frame (Y up, metres); returns how many were written.</summary>
+        [Obsolete("A 0.x query: read GetFrame(index) instead (octocap_motion_get_frame)")]
         public unsafe int GetJoints(int frame, Span<Joint> output)
         {
             uint n;
@@ -40,6 +41,7 @@ namespace Octocap
         }
 
         /// <summary>The bone poses of a frame in the requested coordinate frame (Unity, Godot or the rig's).</summary>
+        [Obsolete("A 0.x query: read GetFrame(index) instead (octocap_motion_get_frame)")]
         public unsafe int GetBones(int frame, CoordFrame coordFrame, Span<BonePose> output)
         {
             uint n;

@@ -116,17 +116,20 @@ namespace Octocap
             get { UpAxis u; OctocapException.Check(NativeMethods.octocap_session_up_axis(Handle, out u)); return u; }
         }
 
+        [Obsolete("A 0.x query of the last solve: read GetFrame() instead (octocap_session_get_frame)")]
         public FrameInfo FrameInfo
         {
             get { FrameInfo f; OctocapException.Check(NativeMethods.octocap_session_get_frame_info(Handle, out f)); return f; }
         }
 
+        [Obsolete("A 0.x query of the last solve: read GetFrame() instead (octocap_session_get_frame)")]
         public uint DefinitionCounter
         {
             get { uint c; OctocapException.Check(NativeMethods.octocap_session_definition_counter(Handle, out c)); return c; }
         }
 
         /// <summary>Fills <paramref name="output"/> with the layout keypoints in 3D; returns how many.</summary>
+        [Obsolete("A 0.x query of the last solve: read GetFrame() instead (octocap_session_get_frame)")]
         public unsafe int GetKeypoints3D(Span<Joint> output)
         {
             uint n;
@@ -136,6 +139,7 @@ namespace Octocap
         }
 
         /// <summary>Fills <paramref name="output"/> with the 15 skeleton joints; returns how many.</summary>
+        [Obsolete("A 0.x query of the last solve: read GetFrame() instead (octocap_session_get_frame)")]
         public unsafe int GetJoints(Span<Joint> output)
         {
             uint n;
@@ -145,6 +149,7 @@ namespace Octocap
         }
 
         /// <summary>Fills <paramref name="output"/> with the bone poses in <paramref name="frame"/>; returns how many.</summary>
+        [Obsolete("A 0.x query of the last solve: read GetFrame() instead (octocap_session_get_frame)")]
         public unsafe int GetBones(CoordFrame frame, Span<BonePose> output)
         {
             uint n;
@@ -153,6 +158,7 @@ namespace Octocap
             return (int)n;
         }
 
+        [Obsolete("A 0.x query of the last solve: read GetFrame() instead (octocap_session_get_frame)")]
         public unsafe int GetSelectedPeople(Span<int> output)
         {
             uint n;

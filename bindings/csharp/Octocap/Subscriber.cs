@@ -26,6 +26,7 @@ namespace Octocap
         public Frame TryGetFrame() => TakeFrame(0);
 
         /// <summary>Takes the next pose, waiting up to <paramref name="timeoutMs"/>; false when none came.</summary>
+        [Obsolete("A 0.x query of the last pose: take a frame with TakeFrame() instead (octocap_subscriber_take_frame)")]
         public bool Take(int timeoutMs)
         {
             Result r = NativeMethods.octocap_subscriber_take(_handle, timeoutMs);
@@ -39,11 +40,13 @@ namespace Octocap
             get { StreamInfo s; OctocapException.Check(NativeMethods.octocap_subscriber_get_stream_info(_handle, out s)); return s; }
         }
 
+        [Obsolete("A 0.x query of the last pose: take a frame with TakeFrame() instead (octocap_subscriber_take_frame)")]
         public FrameInfo FrameInfo
         {
             get { FrameInfo f; OctocapException.Check(NativeMethods.octocap_subscriber_get_frame_info(_handle, out f)); return f; }
         }
 
+        [Obsolete("A 0.x query of the last pose: take a frame with TakeFrame() instead (octocap_subscriber_take_frame)")]
         public unsafe int GetKeypoints3D(Span<Joint> output)
         {
             uint n;
@@ -52,6 +55,7 @@ namespace Octocap
             return (int)n;
         }
 
+        [Obsolete("A 0.x query of the last pose: take a frame with TakeFrame() instead (octocap_subscriber_take_frame)")]
         public unsafe int GetJoints(Span<Joint> output)
         {
             uint n;
@@ -60,6 +64,7 @@ namespace Octocap
             return (int)n;
         }
 
+        [Obsolete("A 0.x query of the last pose: take a frame with TakeFrame() instead (octocap_subscriber_take_frame)")]
         public unsafe int GetBones(CoordFrame frame, Span<BonePose> output)
         {
             uint n;

@@ -1,3 +1,6 @@
+// These tests keep the deprecated 0.x queries working beside frames, so they call them on purpose.
+#pragma warning disable CS0618
+
 using System;
 using NUnit.Framework;
 

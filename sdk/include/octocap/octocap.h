@@ -73,6 +73,19 @@
 #  define OCTOCAP_API __attribute__((visibility("default")))
 #endif
 
+/* The deprecated group (0.x's per-source queries) warns where it is called, so that code moves to frames before the
+ * day the group goes. A program that keeps calling it on purpose (a test of the old path) defines
+ * OCTOCAP_NO_DEPRECATION_WARNINGS before the include. (1.9) */
+#if defined(OCTOCAP_NO_DEPRECATION_WARNINGS) || defined(OCTOCAP_BUILDING_LIBRARY)
+#  define OCTOCAP_DEPRECATED(message)
+#elif defined(__GNUC__) || defined(__clang__)
+#  define OCTOCAP_DEPRECATED(message) __attribute__((deprecated(message)))
+#elif defined(_MSC_VER)
+#  define OCTOCAP_DEPRECATED(message) __declspec(deprecated(message))
+#else
+#  define OCTOCAP_DEPRECATED(message)
+#endif
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -1426,26 +1439,32 @@ typedef struct octocap_frame_info_t {
 } octocap_frame_info_t;
 
 /** Summary of the last frame (::OCTOCAP_ERROR_NO_RESULT before the first solve). */
+OCTOCAP_DEPRECATED("a 0.x query: read a frame (octocap_frame_*) instead")
 OCTOCAP_API octocap_result_t octocap_session_get_frame_info(const octocap_session_t* session,
                                                             octocap_frame_info_t* out);
 
 /** The 3D layout keypoints of the last frame (capacity >= layout keypoint count; NULL out to query count). */
+OCTOCAP_DEPRECATED("a 0.x query: read a frame (octocap_frame_*) instead")
 OCTOCAP_API octocap_result_t octocap_session_get_keypoints3d(const octocap_session_t* session, octocap_joint_t* out,
                                                              uint32_t capacity, uint32_t* count);
 
 /** The ::OCTOCAP_JOINT_COUNT skeleton joints of the last frame (NULL out to query the count). */
+OCTOCAP_DEPRECATED("a 0.x query: read a frame (octocap_frame_*) instead")
 OCTOCAP_API octocap_result_t octocap_session_get_joints(const octocap_session_t* session, octocap_joint_t* out,
                                                         uint32_t capacity, uint32_t* count);
 
 /** Index of the person selected in each view for the last frame (-1 = none). */
+OCTOCAP_DEPRECATED("a 0.x query: read a frame (octocap_frame_*) instead")
 OCTOCAP_API octocap_result_t octocap_session_get_selected_people(const octocap_session_t* session, int32_t* out,
                                                                  uint32_t capacity, uint32_t* count);
 
 /** The ::OCTOCAP_BONE_COUNT bone poses of the last frame, converted to `frame` (NULL out to query the count). */
+OCTOCAP_DEPRECATED("a 0.x query: read a frame (octocap_frame_*) instead")
 OCTOCAP_API octocap_result_t octocap_session_get_bones(const octocap_session_t* session, octocap_coord_frame_t frame,
                                                        octocap_bone_pose_t* out, uint32_t capacity, uint32_t* count);
 
 /** Local rotation of one bone (convenience over octocap_session_get_bones). */
+OCTOCAP_DEPRECATED("a 0.x query: read a frame (octocap_frame_*) instead")
 OCTOCAP_API octocap_result_t octocap_session_get_bone_rotation(const octocap_session_t* session, uint32_t bone,
                                                                octocap_coord_frame_t frame, octocap_quat_t* out);
 
@@ -1453,34 +1472,43 @@ OCTOCAP_API octocap_result_t octocap_session_get_bone_rotation(const octocap_ses
  * Counter that changes whenever the skeleton definition changes (layout, bone table). A consumer caches the
  * definition and re-reads it when this changes.
  */
+OCTOCAP_DEPRECATED("a 0.x query: read a frame (octocap_frame_*) instead")
 OCTOCAP_API octocap_result_t octocap_session_definition_counter(const octocap_session_t* session, uint32_t* out);
 
 /** Takes the next pose as the subscriber's current frame; ::OCTOCAP_ERROR_NO_RESULT when none arrived in time (as in
  *  0.x). Use octocap_subscriber_take_frame(). */
+OCTOCAP_DEPRECATED("a 0.x query: read a frame (octocap_frame_*) instead")
 OCTOCAP_API octocap_result_t octocap_subscriber_take(octocap_subscriber_t* sub, int32_t timeout_ms);
 /** As octocap_session_get_frame_info(), for the current received frame (solve_ms is 0). */
+OCTOCAP_DEPRECATED("a 0.x query: read a frame (octocap_frame_*) instead")
 OCTOCAP_API octocap_result_t octocap_subscriber_get_frame_info(const octocap_subscriber_t* sub,
                                                                octocap_frame_info_t* out);
 /** As octocap_session_get_keypoints3d(), for the current received frame. */
+OCTOCAP_DEPRECATED("a 0.x query: read a frame (octocap_frame_*) instead")
 OCTOCAP_API octocap_result_t octocap_subscriber_get_keypoints3d(const octocap_subscriber_t* sub, octocap_joint_t* out,
                                                                 uint32_t capacity, uint32_t* count);
 /** As octocap_session_get_joints(), for the current received frame. */
+OCTOCAP_DEPRECATED("a 0.x query: read a frame (octocap_frame_*) instead")
 OCTOCAP_API octocap_result_t octocap_subscriber_get_joints(const octocap_subscriber_t* sub, octocap_joint_t* out,
                                                            uint32_t capacity, uint32_t* count);
 /** As octocap_session_get_bones(), for the current received frame. */
+OCTOCAP_DEPRECATED("a 0.x query: read a frame (octocap_frame_*) instead")
 OCTOCAP_API octocap_result_t octocap_subscriber_get_bones(const octocap_subscriber_t* sub, octocap_coord_frame_t frame,
                                                           octocap_bone_pose_t* out, uint32_t capacity,
                                                           uint32_t* count);
 
 /** Appends the last frame's layout keypoints of `session`. Use octocap_motion_writer_add(). */
+OCTOCAP_DEPRECATED("a 0.x query: read a frame (octocap_frame_*) instead")
 OCTOCAP_API octocap_result_t octocap_motion_writer_add_frame(octocap_motion_writer_t* writer,
                                                              const octocap_session_t* session);
 /** The 15 skeleton joints of `frame` (::octocap_joint_id_values order), rig frame (Y up, metres); valid = 0 where
  *  the file has none. */
+OCTOCAP_DEPRECATED("a 0.x query: read a frame (octocap_frame_*) instead")
 OCTOCAP_API octocap_result_t octocap_motion_joints(const octocap_motion_t* motion, uint32_t frame,
                                                    octocap_joint_t* out, uint32_t capacity, uint32_t* count);
 /** The bone poses of `frame`, solved from its joints exactly as a session does (anti-spin, relative to the
  *  T-pose), in the requested coordinate frame. */
+OCTOCAP_DEPRECATED("a 0.x query: read a frame (octocap_frame_*) instead")
 OCTOCAP_API octocap_result_t octocap_motion_bones(const octocap_motion_t* motion, uint32_t frame,
                                                   octocap_coord_frame_t coord_frame, octocap_bone_pose_t* out,
                                                   uint32_t capacity, uint32_t* count);

@@ -23,32 +23,19 @@ DetectorConfig detector_config(const octocap_detector_config_t& given) {
   const size_t len = strnlen(c.model, sizeof c.model);
   if (len == sizeof c.model) throw Error(Errc::invalid_argument, "detector model path is not NUL-terminated");
   d.model.assign(c.model, len);
-  if (c.mode != OCTOCAP_DETECT_PER_VIEW && c.mode != OCTOCAP_DETECT_MOSAIC && c.mode != OCTOCAP_DETECT_CROP)
-    throw Error(Errc::invalid_argument, "detector mode " + std::to_string(c.mode) + " is not a known mode");
+  // Enums and counts cast as given (every core enum is int-based, so any value is defined); validate() judges them.
   d.mode = static_cast<DetectMode>(c.mode);
-  if (c.person_pick < OCTOCAP_PICK_ALL || c.person_pick > OCTOCAP_PICK_NEAREST_PREVIOUS)
-    throw Error(Errc::invalid_argument, "detector person_pick " + std::to_string(c.person_pick) + " is not known");
   d.pick = static_cast<PersonPick>(c.person_pick);
-  if (c.threads > 256) throw Error(Errc::invalid_argument, "detector threads must be 0..256");
-  d.threads = static_cast<int>(c.threads);
+  d.threads = static_cast<int>(std::min<uint32_t>(c.threads, 1u << 20));
   d.mosaic_tile = static_cast<int>(std::min<uint32_t>(c.mosaic_tile_px, 1u << 20));
-  if (c.max_people == 0 || c.max_people > 64) throw Error(Errc::invalid_argument, "detector max_people must be 1..64");
   d.max_people = c.max_people;
-  if (c.parallel_views > 256) throw Error(Errc::invalid_argument, "detector parallel_views must be 0..256");
-  d.parallel_views = static_cast<int>(c.parallel_views);
-  require_finite(c.min_confidence, "detector min_confidence");
+  d.parallel_views = static_cast<int>(std::min<uint32_t>(c.parallel_views, 1u << 20));
   d.min_confidence = c.min_confidence;
-  if (c.views_per_frame > 256) throw Error(Errc::invalid_argument, "detector views_per_frame must be 0..256");
-  d.views_per_frame = static_cast<int>(c.views_per_frame);
-  if (c.device != OCTOCAP_DEVICE_CPU && c.device != OCTOCAP_DEVICE_AUTO && c.device != OCTOCAP_DEVICE_CUDA)
-    throw Error(Errc::invalid_argument, "detector device " + std::to_string(c.device) + " is not a known device");
+  d.views_per_frame = static_cast<int>(std::min<uint32_t>(c.views_per_frame, 1u << 20));
   d.device = static_cast<Device>(c.device);
-  if (c.runtime < OCTOCAP_RUNTIME_AUTO || c.runtime > OCTOCAP_RUNTIME_OPENVINO)
-    throw Error(Errc::invalid_argument, "detector runtime " + std::to_string(c.runtime) + " is not a known runtime");
   d.runtime = static_cast<Runtime>(c.runtime);
-  if (c.precision < OCTOCAP_PRECISION_AUTO || c.precision > OCTOCAP_PRECISION_REDUCED)
-    throw Error(Errc::invalid_argument, "detector precision " + std::to_string(c.precision) + " is not a known precision");
   d.precision = static_cast<Precision>(c.precision);
+  d.validate();
   return d;
 }
 

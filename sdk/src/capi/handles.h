@@ -15,7 +15,7 @@
 #include "pipeline/keypoint_node.h"
 #endif
 #include "pipeline/session.h"
-#include "rig/motion_source.h"
+#include "rig/motion_take.h"
 #include "rig/motion_writer.h"
 #ifdef OCTOCAP_HAVE_DDS
 #include "stream/dds_subscriber.h"
@@ -50,9 +50,7 @@ struct octocap_motion_writer_t {
 };
 
 struct octocap_motion_t {
-  octocap::internal::SkeletonMotion motion;
-  std::vector<std::vector<octocap::internal::SkeletonPose>> bones;  // solved once at open, [person][frame]
-  uint32_t definition_counter = 0;
+  octocap::internal::MotionTake take;
 };
 
 struct octocap_live_t {

@@ -17,7 +17,8 @@ using namespace octocap::internal;
 
 namespace octocap::internal::capi {
 
-// The C struct -> SessionConfig: a mapping only; Session validates the values (pipeline/session.cpp).
+// The C struct -> SessionConfig: a mapping only (what C can say that the core type cannot: a filter enum out of range,
+// a port beyond 16 bits, an unterminated host); SessionConfig::validate() checks the values.
 SessionConfig session_config(const octocap_session_config_t* given) {
   capi::require(given, "cfg");
   capi::check_size(given->struct_size, capi::kSessionConfigSizes, "octocap_session_config_t");
@@ -37,18 +38,11 @@ SessionConfig session_config(const octocap_session_config_t* given) {
   c.struct_size = sizeof c;
   SessionConfig s;
   s.layout = static_cast<LayoutId>(c.layout);
-  if (octocap_layout_keypoint_count(c.layout) == 0)
-    throw Error(Errc::invalid_argument, "config.layout must be a concrete layout (not AUTO)");
-  if (c.method != OCTOCAP_METHOD_SUBDIVISION && c.method != OCTOCAP_METHOD_TRIANGULATION &&
-      c.method != OCTOCAP_METHOD_AUTO)
-    throw Error(Errc::invalid_argument, "config.method is not a known method");
   s.method = static_cast<Method>(c.method);
   if (c.filter != OCTOCAP_FILTER_NONE && c.filter != OCTOCAP_FILTER_ONE_EURO && c.filter != OCTOCAP_FILTER_ONE_EURO_FIXED)
     throw Error(Errc::invalid_argument, "config.filter is not a known filter");
   s.filter = c.filter != OCTOCAP_FILTER_NONE;
   s.filter_adaptive = c.filter == OCTOCAP_FILTER_ONE_EURO;
-  if (c.up_axis != OCTOCAP_UP_Y && c.up_axis != OCTOCAP_UP_Z && c.up_axis != OCTOCAP_UP_AUTO)
-    throw Error(Errc::invalid_argument, "config.up_axis must be Y, Z or AUTO");
   s.up = static_cast<UpAxis>(c.up_axis);
   s.sigma = static_cast<int>(std::min<uint32_t>(c.sigma, 1000));
   s.min_views = static_cast<int>(std::min<uint32_t>(c.min_views, 1000));

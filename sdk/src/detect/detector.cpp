@@ -121,13 +121,30 @@ std::string resolve_model_path(const std::string& model, DetectMode mode) {
   return models_directory() + "/" + name + ".onnx";
 }
 
+void DetectorConfig::validate() const {
+  auto fail = [](const std::string& what) { throw Error(Errc::invalid_argument, "detector " + what); };
+  if (mode != DetectMode::per_view && mode != DetectMode::mosaic && mode != DetectMode::crop)
+    fail("mode " + std::to_string(static_cast<int>(mode)) + " is not a known mode");
+  if (pick < PersonPick::all || pick > PersonPick::nearest_previous)
+    fail("person_pick " + std::to_string(static_cast<int>(pick)) + " is not known");
+  if (device != Device::cpu && device != Device::automatic && device != Device::cuda)
+    fail("device " + std::to_string(static_cast<int>(device)) + " is not a known device");
+  if (runtime < Runtime::automatic || runtime > Runtime::openvino)
+    fail("runtime " + std::to_string(static_cast<int>(runtime)) + " is not a known runtime");
+  if (precision < Precision::automatic || precision > Precision::reduced)
+    fail("precision " + std::to_string(static_cast<int>(precision)) + " is not a known precision");
+  // Thread and view counts beyond 256 are typos, not machines: bounded, so nothing sizes a pool from garbage.
+  if (threads < 0 || threads > 256) fail("threads must be 0..256");
+  if (parallel_views < 0 || parallel_views > 256) fail("parallel_views must be 0..256");
+  if (views_per_frame < 0 || views_per_frame > 256) fail("views_per_frame must be 0..256");
+  if (max_people == 0 || max_people > 64) fail("max_people must be 1..64");
+  if (mosaic_tile < 32 || mosaic_tile > 4096) fail("mosaic tile must be 32..4096 pixels, got " + std::to_string(mosaic_tile));
+  if (!std::isfinite(min_confidence)) fail("min_confidence is NaN or infinite");
+  if (new_people_every < 1) fail("new_people_every must be at least 1");
+}
+
 Detector::Detector(const DetectorConfig& config) : config_(config) {
-  if (config.threads < 0) throw Error(Errc::invalid_argument, "detector threads must be >= 0");
-  if (config.mosaic_tile < 32 || config.mosaic_tile > 4096)
-    throw Error(Errc::invalid_argument, "mosaic tile must be 32..4096 pixels, got " + std::to_string(config.mosaic_tile));
-  if (config.max_people == 0) throw Error(Errc::invalid_argument, "max people per view must be at least 1");
-  if (config.parallel_views < 0) throw Error(Errc::invalid_argument, "parallel views must be >= 0");
-  if (config.views_per_frame < 0) throw Error(Errc::invalid_argument, "views detected per frame must be >= 0");
+  config.validate();
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   parallel_ = config.mode == DetectMode::mosaic ? 1 : config.parallel_views == 0 ? cores : config.parallel_views;
   networks_.push_back(load_network(resolve_model_path(config.model, config.mode)));

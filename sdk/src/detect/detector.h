@@ -49,6 +49,11 @@ struct DetectorConfig {
   // The inference back end and its arithmetic (detect/pose_network.h).
   Runtime runtime = Runtime::automatic;
   Precision precision = Precision::automatic;
+
+  // Every value in range (enums known, counts bounded, the confidence finite). Throws Error(invalid_argument) naming
+  // the field. The one home of these rules: the Detector constructor and the C ABI's mapping both come here, the
+  // latter so that a session's detector config is refused when given, not when its first picture arrives.
+  void validate() const;
 };
 
 struct DetectTimings {

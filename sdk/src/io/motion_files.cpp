@@ -8,6 +8,7 @@
 #include <limits>
 #include <sstream>
 
+#include "core/axes.h"
 #include "core/error.h"
 #include "core/take_timing.h"
 

@@ -60,7 +60,4 @@ double parse_coordinate(const std::string& cell, const std::string& where);
 // A file's frame rate: finite, 0.001 .. 100000 Hz. Throws Error(parse) naming `where` otherwise.
 double parse_rate(const std::string& cell, const std::string& where);
 
-// The rotation a Z-up world gets to become Y up: (x, y, z) -> (y, z, x).
-inline Eigen::Vector3d zup_to_yup(const Eigen::Vector3d& p) { return {p.y(), p.z(), p.x()}; }
-
 }  // namespace octocap::internal

@@ -31,6 +31,8 @@ LiveEngine::LiveEngine(const LiveConfig& config, Calibration calib, const std::v
   if (cameras.size() != calib_.size())
     throw Error(Errc::camera_mismatch, std::to_string(cameras.size()) + " cameras given, the calibration has " +
                                            std::to_string(calib_.size()) + " (give them in calibration order)");
+  // The session first: a config it refuses is an error before any camera is opened.
+  session_ = std::make_unique<Session>(config_.session, calib_);
   auto wake = [this] {
     {
       const std::lock_guard<std::mutex> lock(mutex_);
@@ -53,7 +55,6 @@ LiveEngine::LiveEngine(const LiveConfig& config, Calibration calib, const std::v
   }
   if (!config_.latency_offsets_us.empty() && config_.latency_offsets_us.size() != cameras.size())
     throw Error(Errc::invalid_argument, "latency offsets: one per camera");
-  session_ = std::make_unique<Session>(config_.session, calib_);
 }
 
 LiveEngine::~LiveEngine() { stop(); }

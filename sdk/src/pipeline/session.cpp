@@ -5,9 +5,9 @@
 #include <cmath>
 #include <string>
 
+#include "core/axes.h"
 #include "core/error.h"
 #include "core/log.h"
-#include "io/motion_files.h"
 #ifdef OCTOCAP_HAVE_DDS
 #include "stream/dds_publisher.h"
 #include "stream/vmc_sender.h"
@@ -30,8 +30,23 @@ bool guess_z_up(const Calibration& calib) {
 }
 
 
-// Every value checked, and every per-frame cost bounded: a config that could take seconds a frame is refused.
-void validate(const SessionConfig& c) {
+// NaN/inf, zero confidence or OpenPose's (0, 0) placeholder is "not detected", not an error: detectors emit them.
+Keypoint2D clean(const Keypoint2D& k) {
+  const bool ok = std::isfinite(k.x) && std::isfinite(k.y) && std::isfinite(k.confidence) && k.confidence > 0 &&
+                  !(k.x == 0 && k.y == 0);
+  return ok ? k : Keypoint2D{};
+}
+
+}  // namespace
+
+void SessionConfig::validate(int cameras) const {
+  const SessionConfig& c = *this;
+  if (layout == LayoutId::automatic || std::find(all_layouts().begin(), all_layouts().end(), layout) == all_layouts().end())
+    throw Error(Errc::invalid_argument, "config.layout must be a concrete layout (not AUTO)");
+  if (method != Method::subdivision && method != Method::triangulation && method != Method::automatic)
+    throw Error(Errc::invalid_argument, "config.method is not a known method");
+  if (up != UpAxis::y && up != UpAxis::z && up != UpAxis::automatic)
+    throw Error(Errc::invalid_argument, "config.up_axis must be Y, Z or AUTO");
   const double values[] = {c.delta, c.pixel_tolerance, c.min_confidence, c.outlier_threshold_px, c.filter_min_cutoff,
                            c.filter_beta};
   for (double v : values)
@@ -55,20 +70,24 @@ void validate(const SessionConfig& c) {
   if (c.max_people > kMaxPeople)
     throw Error(Errc::invalid_argument, "config.max_people must be 0 (all) .. " + std::to_string(kMaxPeople) + ", is " +
                                             std::to_string(c.max_people));
+  if (min_views < 2 || min_views > cameras)
+    throw Error(Errc::invalid_argument, "min_views must be between 2 and the camera count (" +
+                                            std::to_string(cameras) + "), is " + std::to_string(min_views));
+  if (sigma > cameras)
+    throw Error(Errc::invalid_argument, "sigma (" + std::to_string(sigma) + ") exceeds the camera count (" +
+                                            std::to_string(cameras) + ")");
+  if (vmc_port && vmc_host.empty()) throw Error(Errc::invalid_argument, "config.vmc_host must name a host");
+  detector.validate();
 }
-
-// NaN/inf, zero confidence or OpenPose's (0, 0) placeholder is "not detected", not an error: detectors emit them.
-Keypoint2D clean(const Keypoint2D& k) {
-  const bool ok = std::isfinite(k.x) && std::isfinite(k.y) && std::isfinite(k.confidence) && k.confidence > 0 &&
-                  !(k.x == 0 && k.y == 0);
-  return ok ? k : Keypoint2D{};
-}
-
-}  // namespace
 
 Session::Session(const SessionConfig& config, Calibration calib)
-    : config_(config), calib_(std::move(calib)), layout_(&layout(config.layout)) {
-  validate(config_);
+    : config_(config), calib_(std::move(calib)), layout_(nullptr) {
+  const int cams = static_cast<int>(calib_.size());
+  if (cams < 2) throw Error(Errc::not_enough_views, "a session needs at least 2 cameras, the calibration has " +
+                                                        std::to_string(cams));
+  if (cams > 64) throw Error(Errc::invalid_argument, "at most 64 cameras are supported");
+  config_.validate(cams);
+  layout_ = &layout(config_.layout);
   auto keypoint = [&](const char* name) {
     for (size_t k = 0; k < layout_->keypoints.size(); ++k)
       if (std::string(layout_->keypoints[k]) == name) return static_cast<int>(k);
@@ -77,17 +96,7 @@ Session::Session(const SessionConfig& config, Calibration calib)
   nose_ = keypoint("Nose"), l_eye_ = keypoint("LEye"), r_eye_ = keypoint("REye");
   l_ear_ = keypoint("LEar"), r_ear_ = keypoint("REar");
   r_index_ = keypoint("RIndex"), r_pinky_ = keypoint("RPinky"), l_index_ = keypoint("LIndex"), l_pinky_ = keypoint("LPinky");
-  const int cams = static_cast<int>(calib_.size());
-  if (cams < 2) throw Error(Errc::not_enough_views, "a session needs at least 2 cameras, the calibration has " +
-                                                        std::to_string(cams));
-  if (cams > 64) throw Error(Errc::invalid_argument, "at most 64 cameras are supported");
-  if (config_.min_views < 2 || config_.min_views > cams)
-    throw Error(Errc::invalid_argument, "min_views must be between 2 and the camera count (" +
-                                            std::to_string(cams) + "), is " + std::to_string(config_.min_views));
   sigma_ = config_.sigma > 0 ? config_.sigma : std::max(2, cams - 1);
-  if (sigma_ > cams)
-    throw Error(Errc::invalid_argument, "sigma (" + std::to_string(sigma_) + ") exceeds the camera count (" +
-                                            std::to_string(cams) + ")");
   // min == max: no volume given, it is derived from the calibration.
   if (config_.volume_min != config_.volume_max) volume_ = Eigen::AlignedBox3d(config_.volume_min, config_.volume_max);
   if (volume_.isEmpty() || volume_.volume() <= 0) {

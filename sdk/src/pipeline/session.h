@@ -61,6 +61,11 @@ struct SessionConfig {
   uint16_t vmc_port = 0;          // 0: no VMC output
   std::string vmc_host = "127.0.0.1";
   DetectorConfig detector;        // for solve_images() unless set_detector(); loaded on first use
+
+  // Every value checked against itself and a rig of `cameras` cameras, and every per-frame cost bounded: a config
+  // that could take seconds a frame is refused. Throws Error(invalid_argument) naming the first field out of range.
+  // The one home of these rules: the Session constructor and the C ABI (through it) both come here.
+  void validate(int cameras) const;
 };
 
 

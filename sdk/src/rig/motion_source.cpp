@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "core/axes.h"
 #include "core/error.h"
 #include "core/take_timing.h"
 #include "io/bvh.h"
