@@ -539,7 +539,9 @@ typedef struct octocap_detector_config_t {
   uint32_t struct_size;            /**< sizeof(octocap_detector_config_t). */
   char model[OCTOCAP_PATH_CAPACITY]; /**< A .onnx path (its model card, same name with .json, beside it) or the name
                                         of a shipped model ("movenet-thunder", "movenet-lightning",
-                                        "movenet-multipose") looked up in $OCTOCAP_MODELS_DIR, else the build's
+                                        "movenet-multipose") looked up in $OCTOCAP_MODELS_DIR, else (1.9) in a
+                                        `models` folder beside liboctocap (a package's), else in
+                                        <prefix>/share/octocap/models of an installed library, else the build's
                                         models directory. Empty (default): movenet-thunder, or movenet-multipose
                                         for the mosaic. */
   octocap_detect_mode_t mode;      /**< Default ::OCTOCAP_DETECT_CROP (of the three, the one that

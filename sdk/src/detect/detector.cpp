@@ -102,14 +102,20 @@ bool cpu_has_vnni() {
 std::string models_directory() {
   const char* env = std::getenv("OCTOCAP_MODELS_DIR");
   if (env && *env) return env;
-  struct stat st {};
-  if (stat(OCTOCAP_DEFAULT_MODELS_DIR, &st) == 0 && S_ISDIR(st.st_mode)) return OCTOCAP_DEFAULT_MODELS_DIR;
-  // An installed library: <prefix>/lib/liboctocap.so -> <prefix>/share/octocap/models.
+  auto is_dir = [](const std::string& path) {
+    struct stat st {};
+    return stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+  };
+  // Where a package puts them first, relative to the library itself: a folder `models` beside it (the Unity package,
+  // a plugin folder), then an install's <prefix>/lib/liboctocap.so -> <prefix>/share/octocap/models. The build's own
+  // folder last, so an installed or packaged library never reads a checkout that happens to be on the machine.
   Dl_info info{};
   if (dladdr(reinterpret_cast<void*>(&models_directory), &info) && info.dli_fname) {
-    std::string lib = info.dli_fname;
+    const std::string lib = info.dli_fname;
     const size_t slash = lib.find_last_of('/');
-    if (slash != std::string::npos) return lib.substr(0, slash) + "/../share/octocap/models";
+    const std::string dir = slash == std::string::npos ? "." : lib.substr(0, slash);
+    for (const std::string& candidate : {dir + "/models", dir + "/../share/octocap/models"})
+      if (is_dir(candidate)) return candidate;
   }
   return OCTOCAP_DEFAULT_MODELS_DIR;
 }
