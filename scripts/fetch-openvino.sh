@@ -5,7 +5,7 @@
 # 90 MB of the wheel's 250. Not its oneTBB: Debian's libtbb12 (2021.8, which OpenCV already loads) has every symbol
 # they use, and two libtbb.so.12 in one process would be one too many. Debian 12 has no OpenVINO package.
 # Why a second runtime: on the same CPU core MoveNet Thunder costs 34.8 ms in ONNX Runtime, 26.5 ms in OpenVINO at
-# f32 and 12.3 ms at the reduced precision its CPU plugin picks on CPUs with bf16 (README "Inference back ends").
+# f32 and 12.3 ms at the reduced precision its CPU plugin picks on CPUs with bf16 (docs/detecting.md "Inference back ends").
 # Result: .cache/openvino/{include,lib} (not committed); CMake's OCTOCAP_OPENVINO_DIR points there.
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"

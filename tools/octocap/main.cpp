@@ -19,9 +19,9 @@ void add_detector_options(CLI::App* app, DetectorOptions& d) {
   app->add_option("--mosaic-tile", d.mosaic_tile, "Mosaic: tile height in pixels")->capture_default_str();
   app->add_option("--max-people", d.max_people, "People kept per view")->check(CLI::Range(1, 64))->capture_default_str();
   app->add_option("--parallel-views", d.parallel_views, "Views inferred at once (0: one per core)")->check(CLI::Range(0, 256))->capture_default_str();
-  app->add_option("--views-per-frame", d.views_per_frame, "Views detected each frame, the others followed by optical flow (0: every view; README \"Real time\")")->check(CLI::Range(0, 256))->capture_default_str();
+  app->add_option("--views-per-frame", d.views_per_frame, "Views detected each frame, the others followed by optical flow (0: every view; docs/benchmarks.md \"Real time\")")->check(CLI::Range(0, 256))->capture_default_str();
   app->add_option("--runtime", d.runtime, "Inference back end: auto (OpenVINO on the CPU where built in, else ONNX Runtime), onnxruntime or openvino")->check(CLI::IsMember({"auto", "onnxruntime", "openvino"}))->capture_default_str();
-  app->add_option("--precision", d.precision, "Network arithmetic: auto (bf16 where this CPU has it natively and the back end can, else f32), f32 or reduced (bf16; OpenVINO)")->check(CLI::IsMember({"auto", "f32", "reduced"}))->capture_default_str();
+  app->add_option("--precision", d.precision, "Network arithmetic: auto (f32 today: bf16 was measured to move keypoints), f32 or reduced (bf16 where the CPU has it; OpenVINO)")->check(CLI::IsMember({"auto", "f32", "reduced"}))->capture_default_str();
   app->add_option("--device", d.device, "Where the network runs: cpu, auto (the GPU when there is one, else the CPU) or cuda (the GPU or an error)")->check(CLI::IsMember({"cpu", "auto", "cuda"}))->capture_default_str();
 }
 
@@ -117,7 +117,7 @@ int main(int argc, char** argv) {
   lv->add_flag("--quiet", live.quiet, "No status line on stderr");
   add_people_option(lv, live.people);
   add_detector_options(lv, live.detector);
-  lv->add_option("--quality", live.quality, "governed: hold --target-fps within --latency-budget, choosing each set how many views the network runs on and which model (README \"Real time\"); max: every view with the model named, whatever the rate")->check(CLI::IsMember({"governed", "max"}))->capture_default_str();
+  lv->add_option("--quality", live.quality, "governed: hold --target-fps within --latency-budget, choosing each set how many views the network runs on and which model (docs/benchmarks.md \"Real time\"); max: every view with the model named, whatever the rate")->check(CLI::IsMember({"governed", "max"}))->capture_default_str();
   lv->add_option("--target-fps", live.target_fps, "Sets a second the governor holds (0: the slowest camera's rate)")->check(CLI::Range(0.0, 1000.0))->capture_default_str();
   lv->add_option("--latency-budget", live.latency_budget_ms, "Grab to frame, ms, that the governor keeps sets within")->check(CLI::Range(10, 10000))->capture_default_str();
 

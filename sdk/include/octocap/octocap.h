@@ -513,7 +513,7 @@ typedef int32_t octocap_runtime_t;
 /** Values of ::octocap_runtime_t. */
 enum octocap_runtime_values {
   OCTOCAP_RUNTIME_AUTO = 0,        /**< OpenVINO on the CPU where the build has it (the faster of the two there, at
-                                        the same keypoints: README "Inference back ends"); ONNX Runtime on a GPU, for
+                                        the same keypoints: docs/detecting.md); ONNX Runtime on a GPU, for
                                         a quantised model (its card's "quantized": calibrated for ONNX Runtime's
                                         integer kernels) or where the build has no OpenVINO. */
   OCTOCAP_RUNTIME_ONNXRUNTIME = 1, /**< ONNX Runtime (CPU, or an NVIDIA GPU with the device setting). */
@@ -525,8 +525,8 @@ enum octocap_runtime_values {
 typedef int32_t octocap_precision_t;
 /** Values of ::octocap_precision_t. */
 enum octocap_precision_values {
-  OCTOCAP_PRECISION_AUTO = 0,    /**< f32 today, in both back ends (bf16 was measured to move keypoints; README
-                                      "Inference back ends"). */
+  OCTOCAP_PRECISION_AUTO = 0,    /**< f32 today, in both back ends (bf16 was measured to move keypoints;
+                                      docs/detecting.md "Inference back ends"). */
   OCTOCAP_PRECISION_F32 = 1,     /**< 32-bit floats everywhere: the model's own numbers. */
   OCTOCAP_PRECISION_REDUCED = 2  /**< bf16 where the CPU has it natively (AVX-512 BF16, AMX; elsewhere OpenVINO keeps
                                       f32 and octocap_detect_info_t.precision says so). OpenVINO only
@@ -559,8 +559,8 @@ typedef struct octocap_detector_config_t {
                                         picture by optical flow (about 1 ms a view instead of tens). Views that cannot
                                         be followed (nobody seen, no previous picture, a track that lost half its
                                         keypoints) are detected anyway; of the rest, those detected longest ago. 0 =
-                                        every view every frame. Default 0. See the README's "Real time" for what each
-                                        value measures. */
+                                        every view every frame. Default 0. See docs/benchmarks.md "Real time" for
+                                        what each value measures. */
   octocap_device_t device;         /**< Where the network runs: ::OCTOCAP_DEVICE_CPU (default), ::OCTOCAP_DEVICE_AUTO or
                                         ::OCTOCAP_DEVICE_CUDA. */
   /* 1.9 */

@@ -23,11 +23,11 @@ enum class DetectMode : int { per_view = 0, mosaic = 1, crop = 2 };
 
 struct DetectorConfig {
   std::string model;  // a path to a .onnx (its card beside it) or a shipped model's name; empty: the mode's default
-  DetectMode mode = DetectMode::crop;  // the most accurate of the three at per-view cost (README "Detecting")
+  DetectMode mode = DetectMode::crop;  // the most accurate of the three at per-view cost (docs/detecting.md)
   PersonPick pick = PersonPick::all;
   int threads = 0;           // inference threads per view; 0 = the back end's default (all cores / parallel views)
-  // Views inferred at once (per view and crop); 0 = as many as cores: every session has 2+ cameras (README "From
-  // images").
+  // Views inferred at once (per view and crop); 0 = as many as cores: every session has 2+ cameras
+  // (docs/benchmarks.md "From images").
   int parallel_views = 0;
   int mosaic_tile = 256;     // mosaic cell height in pixels (the width follows the views' aspect)
   size_t max_people = 4;     // per view, for PersonPick::all (and the crops of several people)

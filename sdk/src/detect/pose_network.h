@@ -12,8 +12,8 @@
 namespace octocap::internal {
 
 // The inference back end (octocap_runtime_t). automatic: OpenVINO on the CPU where the build has it (measured
-// faster at the same keypoints, README "Inference back ends"), ONNX Runtime for a GPU, a quantised model, or where
-// OpenVINO is absent.
+// faster at the same keypoints, docs/detecting.md "Inference back ends"), ONNX Runtime for a GPU, a quantised
+// model, or where OpenVINO is absent.
 enum class Runtime : int { automatic = 0, onnxruntime = 1, openvino = 2 };
 // The arithmetic the network runs in (octocap_precision_t). automatic: f32 (measured: bf16 moves keypoints by pixels
 // on real photos); reduced: bf16 where the back end and CPU have it (OpenVINO on AVX-512 BF16 / AMX CPUs; elsewhere

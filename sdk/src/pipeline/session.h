@@ -37,7 +37,7 @@ struct SessionConfig {
   Method method = Method::automatic;
   bool filter = true;
   // The filter's minimum cutoff follows each keypoint's measured noise (its reprojection error, smoothed): a clean
-  // keypoint is smoothed less, a noisy one more (README "Choosing the defaults").
+  // keypoint is smoothed less, a noisy one more (docs/benchmarks.md "Choosing the defaults").
   bool filter_adaptive = true;
   UpAxis up = UpAxis::automatic;
   int sigma = 0;  // 0: camera count - 1, at least 2

@@ -16,7 +16,7 @@ public sealed class OctocapLiveRig : MonoBehaviour
     public string model = "";
     public DetectMode mode = DetectMode.Crop;
     /// <summary>At most this many views run the network each set, the others followed by optical flow (0: every view;
-    /// the governor then decides how many, README "Real time").</summary>
+    /// the governor then decides how many, docs/benchmarks.md "Real time").</summary>
     public int viewsPerFrame = 0;
     /// <summary>Governed: hold targetFps (0: the cameras' rate) with bounded latency, trading detection for rate; Max: every
     /// view detected, whatever the rate.</summary>

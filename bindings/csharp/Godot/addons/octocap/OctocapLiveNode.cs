@@ -12,7 +12,7 @@ public partial class OctocapLiveNode : Node
     /// too slow.</summary>
     [Export] public string Model = "";
     /// <summary>At most this many views run the network each set, the others followed by optical flow (0: every view;
-    /// the governor then decides how many, README "Real time").</summary>
+    /// the governor then decides how many, docs/benchmarks.md "Real time").</summary>
     [Export] public int ViewsPerFrame = 0;
     /// <summary>Governed: hold TargetFps (0: the cameras' rate) with bounded latency, trading detection for rate; Max: every
     /// view detected, whatever the rate.</summary>
