@@ -295,7 +295,10 @@ TEST_CASE("live: the rate governor reports its choice; a target no host can hold
     if (c.quality == OCTOCAP_QUALITY_MAX) {
       CHECK(s.quality_rungs == 0);
       CHECK(std::string(s.model) == "movenet-thunder");
-      CHECK(s.views_detected == 4);
+      // Every picture of the last set went through the network (none followed by flow). That set holds all four
+      // views unless a camera's picture missed it, which a loaded host can cause (sets_incomplete counts those).
+      INFO("sets incomplete " << s.sets_incomplete);
+      CHECK((s.views_detected == 4 || (s.sets_incomplete > 0 && s.views_detected >= 2)));
       continue;
     }
     CHECK(s.quality_rungs == 5);  // Thunder on 4, 3, 2, 1 views, Lightning on 1
