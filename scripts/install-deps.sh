@@ -22,7 +22,7 @@ $SUDO apt-get install -y -q --no-install-recommends \
   libtomlplusplus-dev nlohmann-json3-dev libcli11-dev \
   libopencv-core-dev libopencv-calib3d-dev libopencv-imgproc-dev libopencv-imgcodecs-dev libopencv-contrib-dev \
   libopencv-videoio-dev libopencv-video-dev \
-  libcurl4-openssl-dev libturbojpeg0-dev \
+  libcurl4-openssl-dev libturbojpeg0-dev libssl-dev openssl \
   libceres-dev libtbb12 \
   assimp-testmodels python3 python3-pip python3-venv \
   mono-devel nunit-console libnunit-cil-dev \

@@ -144,7 +144,7 @@ struct RawWriter {
   RawWriter(const dds_topic_descriptor_t* type, const std::string& topic) {
     octocap::internal::StreamConfig sc;
     sc.qos = octocap::internal::StreamQos::record;
-    const dds_entity_t t = octocap::internal::create_topic(participant.get(), type, topic);
+    const dds_entity_t t = participant.topic(type, topic);
     dds_qos_t* q = octocap::internal::pose_qos(sc);
     writer = dds_create_writer(participant.get(), t, q, nullptr);
     dds_delete_qos(q);

@@ -23,7 +23,7 @@ bool ends_with(const std::string& s, const std::string& suffix) {
 int main(int argc, char** argv) {
   CLI::App app{"octocap-stream-echo: receive octocap skeletons over DDS, print or record them"};
   unsigned domain = 0, count = 0, source = 0;
-  std::string topic = "octocap", qos = "live", record;
+  std::string topic = "octocap", qos = "live", record, security;
   double timeout_s = 10, rate = 30;
   bool quiet = false;
   app.add_option("--domain", domain, "DDS domain id")->capture_default_str();
@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
   app.add_option("--record", record, "Write the received keypoints to a .trc or .csv file");
   app.add_option("--rate", rate, "Frame rate written to a TRC")->capture_default_str();
   app.add_flag("--quiet", quiet, "No line per frame");
+  app.add_option("--dds-security", security, "DDS Security: this reader's identity folder, KEYSTORE/NAME (octocap security add ... --role viewer)");
   CLI11_PARSE(app, argc, argv);
   octocap_set_log_callback(log_to_stderr, OCTOCAP_LOG_INFO, nullptr);
 
@@ -45,6 +46,8 @@ int main(int argc, char** argv) {
     cfg.qos = qos == "record" ? OCTOCAP_QOS_RECORD : OCTOCAP_QOS_LIVE;
     cfg.source_id = source;
     std::snprintf(cfg.topic, sizeof cfg.topic, "%s", topic.c_str());
+    if (security.size() >= sizeof cfg.security) throw std::runtime_error("--dds-security: the path is too long");
+    std::snprintf(cfg.security, sizeof cfg.security, "%s", security.c_str());
     octocap::Subscriber sub(cfg);
     std::optional<octocap::MotionWriter> writer;
     unsigned received = 0;

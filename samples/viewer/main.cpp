@@ -24,7 +24,7 @@ struct Options {
   bool all_cameras = false, skeleton = false, no_grid = false, window = false;
   bool subscribe = false;  // live poses over DDS instead of --motion
   unsigned domain = 0, source_id = 0;
-  std::string topic = "octocap", qos = "live";
+  std::string topic = "octocap", qos = "live", dds_security;
   int max_frames = 0, step = 1;
 };
 
@@ -116,6 +116,8 @@ int run(const Options& o) {
     sc.qos = o.qos == "record" ? OCTOCAP_QOS_RECORD : OCTOCAP_QOS_LIVE;
     sc.source_id = o.source_id;
     std::snprintf(sc.topic, sizeof sc.topic, "%s", o.topic.c_str());
+    if (o.dds_security.size() >= sizeof sc.security) throw std::runtime_error("--dds-security: the path is too long");
+    std::snprintf(sc.security, sizeof sc.security, "%s", o.dds_security.c_str());
     subscriber = std::make_unique<octocap::Subscriber>(sc);
   }
   Scene scene = o.subscribe ? Scene(subscriber.get(), so) : Scene(o.motion, so);
@@ -210,6 +212,7 @@ int main(int argc, char** argv) {
   app.add_option("--topic", o.topic, "With --subscribe: topic base name")->capture_default_str();
   app.add_option("--qos", o.qos, "With --subscribe: live or record (as the publisher)")->check(CLI::IsMember({"live", "record"}))->capture_default_str();
   app.add_option("--source-id", o.source_id, "With --subscribe: only this rig (0: any)")->capture_default_str();
+  app.add_option("--dds-security", o.dds_security, "With --subscribe: DDS Security identity folder, KEYSTORE/NAME (octocap security add ... --role viewer)");
   app.add_option("--frames", o.frames_dir, "Write one PNG per motion frame here (frame_000000.png, ...)");
   app.add_option("--model", o.model, "Rigged character (glTF/GLB, FBX, COLLADA, X, ...); default: assimp's rigged human")->check(CLI::ExistingFile);
   app.add_option("--bone-map", o.bone_map, "JSON {\"octocap bone\": \"model node\"} overriding the name heuristics")->check(CLI::ExistingFile);

@@ -33,6 +33,7 @@ struct DetectOptions {
   bool live = false, publish_keypoints = false;
   std::vector<std::string> cameras, camera_names;
   std::string node = "node1", topic = "octocap";
+  std::string dds_security;  // a keystore identity folder (role node)
   unsigned domain = 0;
   double duration_s = 0;
   double picture_rate_hz = 30;

@@ -32,6 +32,7 @@ int live(const LiveOptions& o) {
   // Remote cameras (dds://NODE/CAMERA) are read where this rig streams: one DDS domain and topic per rig.
   cfg.remote_domain_id = o.out.domain;
   std::snprintf(cfg.remote_topic, sizeof cfg.remote_topic, "%s", o.out.topic.c_str());
+  set_identity(cfg.remote_security, o.out.dds_security);  // a hub: one identity reads the nodes and streams
   octocap_session_config_t scfg;
   octocap_session_config_init(&scfg);
   scfg.layout = OCTOCAP_LAYOUT_COCO_17;  // the shipped models' layout

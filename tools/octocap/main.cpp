@@ -6,6 +6,7 @@
 #include "detect_command.h"
 #include "option_typos.h"
 #include "live_command.h"
+#include "security_command.h"
 #include "sync_command.h"
 #include "solve_command.h"
 
@@ -35,6 +36,7 @@ void add_output_options(CLI::App* app, OutputOptions& o) {
   app->add_option("--vmc-port", o.vmc_port, "Also send VMC protocol (OSC/UDP) to this port (VMC's usual: 39539)")
       ->check(CLI::Range(0, 65535));
   app->add_option("--vmc-host", o.vmc_host, "VMC receiver host")->capture_default_str();
+  app->add_option("--dds-security", o.dds_security, "DDS Security: this participant's identity folder, KEYSTORE/NAME (octocap security add; role hub); the stream and the capture nodes' keypoints then go over an authenticated, encrypted network (docs/security.md)");
 }
 
 }  // namespace
@@ -92,6 +94,7 @@ int main(int argc, char** argv) {
   dc->add_option("--node", detect.node, "--live: this node's name, the NODE of dds://NODE/CAMERA")->capture_default_str();
   dc->add_option("--domain", detect.domain, "--live: DDS domain id")->check(CLI::Range(0, 232))->capture_default_str();
   dc->add_option("--topic", detect.topic, "--live: DDS topic base name")->capture_default_str();
+  dc->add_option("--dds-security", detect.dds_security, "--live: DDS Security identity folder, KEYSTORE/NAME (octocap security add; role node): the keypoints go to hubs of that keystore only (docs/security.md)")->needs(dlive);
   dc->add_option("--duration", detect.duration_s, "--live: stop after this many seconds (0: when the cameras end, or Ctrl-C)")->capture_default_str();
   dc->add_option("--detect-rate", detect.detect_rate_hz, "--live: detections per second and camera, at wall-clock ticks all nodes share (0: the fastest of 60, 30, 20, 15, 12, 10, ... the detector keeps up with); give every node the same")->check(CLI::Range(0.0, 1000.0))->capture_default_str();
   dc->add_option("--picture-rate", detect.picture_rate_hz, "--live: rate of picture-folder cameras")->check(CLI::PositiveNumber)->capture_default_str();
@@ -131,6 +134,9 @@ int main(int argc, char** argv) {
 
   CLI::App* lc = app.add_subcommand("layouts", "List the keypoint layouts and their keypoints");
 
+  SecurityOptions security;
+  CLI::App* sec = add_security_commands(app, security);
+
   if (const int status = report_unknown_options(app, argc, argv)) return status;
   CLI11_PARSE(app, argc, argv);
   if (sc->parsed() && solve.keypoints.empty() && solve.images.empty()) {
@@ -142,5 +148,6 @@ int main(int argc, char** argv) {
   if (lv->parsed()) return run_live(live);
   if (sy->parsed()) return run_sync(sync);
   if (lc->parsed()) return run_layouts();
+  if (sec->parsed()) return run_security(security);
   return 0;
 }

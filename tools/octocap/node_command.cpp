@@ -8,6 +8,7 @@
 #include "command_main.h"
 #include "detect_command.h"
 #include "live_common.h"
+#include "output_options.h"
 #include "octocap/octocap.hpp"
 
 namespace {
@@ -24,6 +25,7 @@ int node(const DetectOptions& o) {
   std::snprintf(cfg.name, sizeof cfg.name, "%s", o.node.c_str());
   std::snprintf(cfg.topic, sizeof cfg.topic, "%s", o.topic.c_str());
   cfg.domain_id = o.domain;
+  set_identity(cfg.security, o.dds_security);
   cfg.picture_rate_hz = static_cast<float>(o.picture_rate_hz);
   cfg.detect_rate_hz = static_cast<float>(o.detect_rate_hz);
   octocap::Node capture(cfg, live_common::expand_camera_secrets(o.cameras), o.camera_names);

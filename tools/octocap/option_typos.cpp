@@ -30,11 +30,24 @@ int report_unknown_options(const CLI::App& app, int argc, char** argv) {
   for (const CLI::App* s : app.get_subcommands([](const CLI::App*) { return true; }))
     if (s->get_name() == argv[1]) sub = s;
   if (sub == nullptr) return 0;  // CLI11 names an unknown subcommand itself
+  // A nested command (octocap security add): its own options count.
+  std::string command = argv[1];
+  int first = 2;
+  for (bool deeper = true; deeper && first < argc;) {
+    deeper = false;
+    for (const CLI::App* s : sub->get_subcommands([](const CLI::App*) { return true; }))
+      if (s->get_name() == argv[first]) {
+        sub = s;
+        command += std::string(" ") + argv[first++];
+        deeper = true;
+        break;
+      }
+  }
   std::vector<std::string> known = {"help"};
   for (const CLI::Option* o : sub->get_options())
     for (const std::string& n : o->get_lnames()) known.push_back(n);
   int unknown = 0;
-  for (int i = 2; i < argc; ++i) {
+  for (int i = first; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--") break;  // what follows is values only
     if (arg.size() < 3 || arg.compare(0, 2, "--") != 0) continue;
@@ -46,11 +59,11 @@ int report_unknown_options(const CLI::App& app, int argc, char** argv) {
       if (const size_t d = edit_distance(name, k); d < best) best = d, nearest = k;
     ++unknown;
     if (best <= std::max<size_t>(2, name.size() / 3))
-      std::fprintf(stderr, "octocap %s: unknown option --%s; did you mean --%s?\n", argv[1], name.c_str(),
+      std::fprintf(stderr, "octocap %s: unknown option --%s; did you mean --%s?\n", command.c_str(), name.c_str(),
                    nearest.c_str());
     else
-      std::fprintf(stderr, "octocap %s: unknown option --%s (octocap %s --help lists them)\n", argv[1], name.c_str(),
-                   argv[1]);
+      std::fprintf(stderr, "octocap %s: unknown option --%s (octocap %s --help lists them)\n", command.c_str(),
+                   name.c_str(), command.c_str());
   }
   return unknown ? 2 : 0;
 }

@@ -96,7 +96,7 @@ extern "C" {
 
 /** Version of this header. The library's own is octocap_version_number(). */
 #define OCTOCAP_VERSION_MAJOR 1
-#define OCTOCAP_VERSION_MINOR 9
+#define OCTOCAP_VERSION_MINOR 10
 #define OCTOCAP_VERSION_PATCH 0
 /** MAJOR * 10000 + MINOR * 100 + PATCH: 10000 for 1.0.0. */
 #define OCTOCAP_VERSION_NUMBER (OCTOCAP_VERSION_MAJOR * 10000 + OCTOCAP_VERSION_MINOR * 100 + OCTOCAP_VERSION_PATCH)
@@ -729,6 +729,13 @@ typedef struct octocap_session_config_t {
                                       say it is the same person; ids are never reused within a session). 0: everyone
                                       there, up to ::OCTOCAP_MAX_PEOPLE. People whose body is outside the capture
                                       volume (volume_min/max) are not solved. */
+  /* 1.10 */
+  uint32_t reserved_1_10;        /**< Unused, ignored: it fills what was 1.3's padding (a 1.3 caller's bytes there are
+                                      not zeroed), so that nothing of 1.10 is read from it. */
+  char stream_security[OCTOCAP_PATH_CAPACITY]; /**< "" (default): the stream is plain DDS. A keystore identity
+                                      folder (KEYSTORE/NAME, made by octocap_keystore_add_identity(), role HUB): the
+                                      stream is published over DDS Security, readable only by identities of the same
+                                      keystore whose role may read it (see "Securing the network"). */
 } octocap_session_config_t;
 
 /** The most people one frame holds (octocap_session_config_t.max_people = 0). */
@@ -894,6 +901,10 @@ typedef struct octocap_live_config_t {
   float target_fps;              /**< Sets a second the governor holds. 0 (default): the slowest camera's rate. */
   uint32_t latency_budget_ms;    /**< Grab of a set's oldest picture to its frame, that the governor keeps sets
                                       within (collection counts). Default 100; 10 .. 10000. */
+  /* 1.10 */
+  char remote_security[OCTOCAP_PATH_CAPACITY]; /**< "" (default): remote cameras' keypoints are read over plain DDS.
+                                      A keystore identity folder (role HUB): they are read over DDS Security, from
+                                      nodes of the same keystore only. */
 } octocap_live_config_t;
 
 /** Fills the first `struct_size` bytes of `cfg` with defaults (STRUCT_SIZE for an unknown size). Call it through
@@ -1079,6 +1090,9 @@ typedef struct octocap_node_config_t {
                                       one instant; a tick the detector cannot keep up with is skipped. 0 (default): the
                                       fastest of 60, 30, 20, 15, 12, 10, 6, 5, 4, 3, 2, 1 it keeps up with (rates that
                                       meet at common ticks); give every node the same rate for whole sets at it. */
+  /* 1.10 */
+  char security[OCTOCAP_PATH_CAPACITY]; /**< "" (default): plain DDS. A keystore identity folder (role NODE): the
+                                      keypoints are published over DDS Security, for hubs of the same keystore only. */
 } octocap_node_config_t;
 
 /** Fills the first `struct_size` bytes of `cfg` with defaults. Call it through octocap_node_config_init(). */
@@ -1150,6 +1164,10 @@ typedef struct octocap_subscriber_config_t {
   uint32_t history_depth;        /**< RECORD: poses kept for this reader. Default 256. */
   uint32_t source_id;            /**< Only this source; 0 = any. Default 0. */
   char topic[OCTOCAP_NAME_CAPACITY]; /**< Default "octocap". */
+  /* 1.10 */
+  char security[OCTOCAP_PATH_CAPACITY]; /**< "" (default): plain DDS. A keystore identity folder (role VIEWER or
+                                      HUB): the stream is read over DDS Security, from publishers of the same keystore
+                                      only. The publisher and the subscriber are secured alike or they never meet. */
 } octocap_subscriber_config_t;
 
 /** Counters of a subscription. */
@@ -1188,6 +1206,61 @@ OCTOCAP_API octocap_result_t octocap_subscriber_take_frame(octocap_subscriber_t*
 /** Counters: frames received and lost, publisher restarts, rejected samples. */
 OCTOCAP_API octocap_result_t octocap_subscriber_get_stream_info(const octocap_subscriber_t* sub,
                                                                 octocap_stream_info_t* out);
+
+/** @} */
+/* ------------------------------------------------------------------------------------------------------ */
+/** @name Securing the network: a DDS Security keystore
+ *
+ * A plain DDS stream can be read by anyone on the network, and anyone can publish keypoints into a hub. A keystore
+ * closes the network to everyone else: one certificate authority (CA) signs an identity per participant, a governance
+ * (no unauthenticated participant joins; discovery, liveliness and every sample are encrypted) and each identity's
+ * permissions, which follow its role:
+ *
+ *     octocap_keystore_create("studio", 3650);                                   CA + governance, once per studio
+ *     octocap_keystore_add_identity("studio", "hub", OCTOCAP_ROLE_HUB, 365);     studio/hub/
+ *     octocap_keystore_add_identity("studio", "booth1", OCTOCAP_ROLE_NODE, 365); studio/booth1/
+ *     octocap_keystore_add_identity("studio", "unity", OCTOCAP_ROLE_VIEWER, 365);
+ *
+ * Each participant is then given its identity folder: `stream_security` (a session that streams),
+ * `remote_security` (a live engine reading capture nodes), `security` (a node, a subscriber); `--dds-security
+ * studio/hub` in the tools. Nothing else changes: CYCLONEDDS_URI configures the network as before. A participant
+ * with no identity, or another keystore's, neither reads nor writes; one whose role does not cover a topic gets
+ * INVALID_ARGUMENT naming the topic. The files are checked when a participant starts (IO: missing; PARSE: not what
+ * they should be; INVALID_ARGUMENT: expired, not signed by the keystore's CA, a key that is not the certificate's).
+ * The CA's private key (KEYSTORE/ca.key.pem) is needed only to add identities: keep it off the capture machines.
+ * Made with OpenSSL (P-256 keys, SHA-256, S/MIME-signed XML, the layout Cyclone DDS's security plugins read); the
+ * plugins (libdds_security_auth, _ac and _crypto) must be installed, as Debian's libddsc0debian does.
+ * Since 1.10.
+ */
+/** @{ */
+
+/** What an identity may do on the network. */
+typedef enum octocap_security_role_t {
+  OCTOCAP_ROLE_NODE = 0,        /**< Publishes 2D keypoints ("<topic>_keypoints2d"): a capture node. */
+  OCTOCAP_ROLE_HUB = 1,         /**< Reads keypoints; publishes skeletons ("<topic>_definition", "_pose", "_people"):
+                                     a live engine, a session that streams. */
+  OCTOCAP_ROLE_VIEWER = 2       /**< Reads skeletons: a subscriber (a viewer, a game). */
+} octocap_security_role_t;
+
+/**
+ * Makes a keystore in `dir` (created if missing; readable by its owner only): KEYSTORE/ca.pem, ca.key.pem,
+ * governance.xml and its signed governance.p7s, valid for `valid_days` (1 .. 36500). Errors: INVALID_ARGUMENT (a
+ * folder that holds a keystore already, whose identities a new CA would orphan; days out of range), IO.
+ */
+OCTOCAP_API octocap_result_t octocap_keystore_create(const char* dir, uint32_t valid_days);
+/**
+ * Adds identity `name` (1 to 64 letters, digits, '-', '_', '.') with `role` to the keystore `dir`: DIR/NAME/cert.pem
+ * (subject "CN=NAME,O=octocap", signed by the CA), key.pem (owner-only), permissions.xml and permissions.p7s, valid
+ * for `valid_days`. Errors: INVALID_ARGUMENT (a bad name, an identity that exists, an unknown role), IO or PARSE (no
+ * keystore in `dir`).
+ */
+OCTOCAP_API octocap_result_t octocap_keystore_add_identity(const char* dir, const char* name,
+                                                           octocap_security_role_t role, uint32_t valid_days);
+/**
+ * Checks an identity folder as a participant would before it joins, and writes its role (NULL allowed). Errors as
+ * for a participant's start (IO, PARSE, INVALID_ARGUMENT), each naming the file and the cause.
+ */
+OCTOCAP_API octocap_result_t octocap_keystore_check_identity(const char* identity_dir, octocap_security_role_t* role);
 
 /** @} */
 /* ------------------------------------------------------------------------------------------------------ */

@@ -13,6 +13,12 @@ thread_local std::string t_last_error;
 void set_last_error(const std::string& message) { t_last_error = redact_credentials(message); }
 void clear_last_error() { t_last_error.clear(); }
 
+std::string c_text(const char* src, size_t capacity, const char* what) {
+  const size_t len = strnlen(src, capacity);
+  if (len == capacity) throw Error(Errc::invalid_argument, std::string(what) + " is not NUL-terminated");
+  return std::string(src, len);
+}
+
 void copy_name(char* dst, size_t capacity, const std::string& src) {
   if (capacity == 0) return;
   const size_t n = std::min(capacity - 1, src.size());

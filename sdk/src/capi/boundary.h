@@ -80,6 +80,8 @@ octocap_result_t guard(F&& fn) noexcept {
 }
 
 void copy_name(char* dst, size_t capacity, const std::string& src);
+// A char array's text: NUL-terminated within `capacity` (Error(invalid_argument) naming `what` otherwise), maybe empty.
+std::string c_text(const char* src, size_t capacity, const char* what);
 
 // A call that worked but produced nothing returns a positive status, not OK and not an error.
 inline octocap_result_t status_unless(octocap_result_t r, bool produced, octocap_result_t status) {

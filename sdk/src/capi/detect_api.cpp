@@ -20,9 +20,7 @@ DetectorConfig detector_config(const octocap_detector_config_t& given) {
   octocap_detector_config_init(&defaults);
   const octocap_detector_config_t c = widen(given, defaults);
   DetectorConfig d;
-  const size_t len = strnlen(c.model, sizeof c.model);
-  if (len == sizeof c.model) throw Error(Errc::invalid_argument, "detector model path is not NUL-terminated");
-  d.model.assign(c.model, len);
+  d.model = c_text(c.model, sizeof c.model, "detector model path");
   // Enums and counts cast as given (every core enum is int-based, so any value is defined); validate() judges them.
   d.mode = static_cast<DetectMode>(c.mode);
   d.pick = static_cast<PersonPick>(c.person_pick);

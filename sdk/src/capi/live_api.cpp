@@ -89,6 +89,7 @@ octocap_result_t octocap_live_config_defaults(octocap_live_config_t* c, uint32_t
     d.max_wait_us = static_cast<uint32_t>(live.max_wait_us);
     d.remote_domain_id = live.remote_domain_id;
     capi::copy_name(d.remote_topic, sizeof d.remote_topic, live.remote_topic);
+    capi::copy_name(d.remote_security, sizeof d.remote_security, live.remote_security);
     d.quality = live.governed ? OCTOCAP_QUALITY_GOVERNED : OCTOCAP_QUALITY_MAX;
     d.target_fps = static_cast<float>(live.target_fps);
     d.latency_budget_ms = static_cast<uint32_t>(live.latency_budget_ms);
@@ -116,6 +117,7 @@ octocap_result_t octocap_live_create(const octocap_live_config_t* given, const o
     config.max_wait_us = c.max_wait_us;
     config.remote_domain_id = capi::domain_id(c.remote_domain_id);
     config.remote_topic = capi::topic_name(c.remote_topic, sizeof c.remote_topic, "cfg.remote_topic");
+    config.remote_security = capi::c_text(c.remote_security, sizeof c.remote_security, "cfg.remote_security");
     if (c.quality != OCTOCAP_QUALITY_GOVERNED && c.quality != OCTOCAP_QUALITY_MAX)
       throw Error(Errc::invalid_argument, "cfg.quality must be OCTOCAP_QUALITY_GOVERNED or OCTOCAP_QUALITY_MAX");
     capi::require_finite(c.target_fps, "cfg.target_fps");

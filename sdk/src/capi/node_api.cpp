@@ -65,6 +65,7 @@ octocap_result_t octocap_node_create(const octocap_node_config_t* given, const c
     config.name.assign(c.name, name_len);
     config.domain_id = capi::domain_id(c.domain_id);
     config.topic = capi::topic_name(c.topic, sizeof c.topic, "cfg.topic");
+    config.security = capi::c_text(c.security, sizeof c.security, "cfg.security");
     config.feeds = feeds;
     config.detect_rate_hz = c.detect_rate_hz;
     auto node = std::make_unique<KeypointNode>(config, specs, camera_names);

@@ -60,6 +60,7 @@ SessionConfig session_config(const octocap_session_config_t* given) {
   s.publish = c.stream_enable != 0;
   if (s.publish) s.stream = capi::stream_config(c.stream_domain_id, c.stream_qos, c.stream_history_depth,
                                                 c.stream_source_id, c.stream_topic, sizeof c.stream_topic);
+  s.stream.security = capi::c_text(c.stream_security, sizeof c.stream_security, "cfg.stream_security");
   if (c.vmc_port > 65535) throw Error(Errc::invalid_argument, "config.vmc_port must be 0..65535");
   s.vmc_port = static_cast<uint16_t>(c.vmc_port);
   const size_t host_len = strnlen(c.vmc_host, sizeof c.vmc_host);
@@ -101,6 +102,7 @@ octocap_session_config_t c_session_config(const SessionConfig& s) {
   c.stream_history_depth = s.stream.history_depth;
   c.stream_source_id = s.stream.source_id;
   capi::copy_name(c.stream_topic, sizeof c.stream_topic, s.stream.topic);
+  capi::copy_name(c.stream_security, sizeof c.stream_security, s.stream.security);
   c.vmc_port = s.vmc_port;
   capi::copy_name(c.vmc_host, sizeof c.vmc_host, s.vmc_host);
   c.max_people = s.max_people;

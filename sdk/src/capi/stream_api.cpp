@@ -90,8 +90,11 @@ octocap_result_t octocap_subscriber_create(const octocap_subscriber_config_t* cf
     *out = nullptr;
     capi::require(cfg, "cfg");
     capi::check_size(cfg->struct_size, capi::kSubscriberConfigSizes, "octocap_subscriber_config_t");
-    const StreamConfig sc =
-        capi::stream_config(cfg->domain_id, cfg->qos, cfg->history_depth, cfg->source_id, cfg->topic, sizeof cfg->topic);
+    octocap_subscriber_config_t defaults;
+    octocap_subscriber_config_init(&defaults);
+    const octocap_subscriber_config_t c = capi::widen(*cfg, defaults);
+    StreamConfig sc = capi::stream_config(c.domain_id, c.qos, c.history_depth, c.source_id, c.topic, sizeof c.topic);
+    sc.security = capi::c_text(c.security, sizeof c.security, "cfg.security");
 #ifdef OCTOCAP_HAVE_DDS
     auto sub = std::make_unique<DdsSubscriber>(sc);
     *out = capi::make_handle<octocap_subscriber_t>(std::move(sub));

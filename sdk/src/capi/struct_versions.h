@@ -14,8 +14,8 @@
 namespace octocap::internal::capi {
 
 // octocap_session_config_t: 0.1 (84), 0.2 streaming (152), 0.2 VMC = 1.0 (216), 0.3 with the detector config nested
-// at its end (760; see LegacySessionConfig03), 1.3 max_people (224).
-constexpr std::initializer_list<uint32_t> kSessionConfigSizes = {84, 152, 216, 760, 224};
+// at its end (760; see LegacySessionConfig03), 1.3 max_people (224), 1.10 stream_security (736).
+constexpr std::initializer_list<uint32_t> kSessionConfigSizes = {84, 152, 216, 760, 224, 736};
 // The size of the 1.0 session config, which the 0.3 layout nests its detector config after.
 constexpr uint32_t kSessionConfigSize10 = 216;
 // octocap_detector_config_t: 0.3 (540), 0.3 parallel_views = 1.0 (544), 1.5 views_per_frame and device (552), 1.9
@@ -23,14 +23,15 @@ constexpr uint32_t kSessionConfigSize10 = 216;
 constexpr std::initializer_list<uint32_t> kDetectorConfigSizes = {540, 544, 552, 560};
 // The size of the 1.0 detector config, which the 0.3 session config nests.
 constexpr uint32_t kDetectorConfigSize10 = 544;
-constexpr std::initializer_list<uint32_t> kSubscriberConfigSizes = {52};
+// octocap_subscriber_config_t: 0.2 (52), 1.10 security (564).
+constexpr std::initializer_list<uint32_t> kSubscriberConfigSizes = {52, 564};
 // octocap_extrinsics_options_t: without (32) and with `refine` (36).
 constexpr std::initializer_list<uint32_t> kExtrinsicsOptionsSizes = {32, 36};
 
-// octocap_live_config_t: 1.0 (28), 1.1 remote cameras (64), 1.8 the rate governor (76).
-constexpr std::initializer_list<uint32_t> kLiveConfigSizes = {28, 64, 76};
-// octocap_node_config_t: 1.1 (92).
-constexpr std::initializer_list<uint32_t> kNodeConfigSizes = {92};
+// octocap_live_config_t: 1.0 (28), 1.1 remote cameras (64), 1.8 the rate governor (76), 1.10 remote_security (588).
+constexpr std::initializer_list<uint32_t> kLiveConfigSizes = {28, 64, 76, 588};
+// octocap_node_config_t: 1.1 (92), 1.10 security (604).
+constexpr std::initializer_list<uint32_t> kNodeConfigSizes = {92, 604};
 
 // The 0.3 session config: 1.0's 216 bytes of session fields, then the 1.0 detector config (now set with
 // octocap_session_set_detector()). Bytes, not today's struct: the detector config grows, this layout never does.
@@ -38,13 +39,14 @@ struct LegacySessionConfig03 {
   unsigned char base[kSessionConfigSize10];
   alignas(4) unsigned char detector[kDetectorConfigSize10];
 };
-static_assert(sizeof(octocap_session_config_t) == 224 && offsetof(octocap_session_config_t, max_people) == 216,
-              "1.3's session config is 1.0's and max_people: grow it only at its end");
+static_assert(sizeof(octocap_session_config_t) == 736 && offsetof(octocap_session_config_t, max_people) == 216 &&
+                  offsetof(octocap_session_config_t, stream_security) == 224,
+              "1.3's session config is 1.0's and max_people, 1.10 adds stream_security: grow it only at its end");
 static_assert(offsetof(LegacySessionConfig03, detector) == 216 && sizeof(LegacySessionConfig03) == 760,
               "the 0.3 layout must stay byte-exact");
-static_assert(sizeof(octocap_detector_config_t) == 560 && sizeof(octocap_subscriber_config_t) == 52 &&
-                  sizeof(octocap_extrinsics_options_t) == 36 && sizeof(octocap_live_config_t) == 76 &&
-                  sizeof(octocap_node_config_t) == 92,
+static_assert(sizeof(octocap_detector_config_t) == 560 && sizeof(octocap_subscriber_config_t) == 564 &&
+                  sizeof(octocap_extrinsics_options_t) == 36 && sizeof(octocap_live_config_t) == 588 &&
+                  sizeof(octocap_node_config_t) == 604,
               "a config struct grew: add its new size to the tables above and to tests/abi");
 
 inline bool known_size(uint32_t size, std::initializer_list<uint32_t> sizes) {

@@ -101,7 +101,7 @@ void KeypointNode::start() {
   if (running_) throw Error(Errc::invalid_argument, "the capture node is already running");
   for (auto& c : cameras_)
     if (!c->detector) c->detector = std::make_unique<Detector>(config_.detector);  // fail before opening cameras
-  if (!publisher_) publisher_ = std::make_unique<KeypointPublisher>(config_.domain_id, config_.topic);
+  if (!publisher_) publisher_ = std::make_unique<KeypointPublisher>(config_.domain_id, config_.topic, config_.security);
   size_t opened = 0;
   try {
     for (; opened < cameras_.size(); ++opened) cameras_[opened]->feed->start();

@@ -23,6 +23,7 @@ struct NodeConfig {
   std::string name = "node1";  // the NODE of dds://NODE/CAMERA
   uint32_t domain_id = 0;
   std::string topic = "octocap";  // keypoints go to "<topic>_keypoints2d"
+  std::string security;           // a keystore identity folder: publish over DDS Security ("" off)
   FeedOptions feeds;
   DetectorConfig detector;
   // Detections per second and camera, at wall-clock ticks every node shares (k / rate since 1970); 0: the fastest of

@@ -47,7 +47,8 @@ LiveEngine::LiveEngine(const LiveConfig& config, Calibration calib, const std::v
       continue;
     }
 #ifdef OCTOCAP_HAVE_DDS
-    if (!receiver_) receiver_ = std::make_shared<KeypointReceiver>(config_.remote_domain_id, config_.remote_topic);
+    if (!receiver_) receiver_ = std::make_shared<KeypointReceiver>(config_.remote_domain_id, config_.remote_topic,
+                                                                   config_.remote_security);
     feeds_.push_back(std::make_unique<RemoteFeed>(std::move(spec), config_.feeds, receiver_, wake));
 #else
     throw Error(Errc::unsupported, "camera '" + cameras[c] + "': remote cameras need DDS, which this build has not");

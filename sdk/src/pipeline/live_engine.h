@@ -34,6 +34,7 @@ struct LiveConfig {
   std::vector<int64_t> latency_offsets_us;  // per camera (see FrameSetOptions::offsets_us)
   uint32_t remote_domain_id = 0;            // where remote cameras' keypoints are read (dds://NODE/CAMERA)
   std::string remote_topic = "octocap";     // ... "<topic>_keypoints2d"
+  std::string remote_security;              // a keystore identity folder: read them over DDS Security ("" off)
   // The rate governor (rate_governor.h): off, every set gets the detector config's detection (--quality max).
   bool governed = true;
   double target_fps = 0;           // sets a second it holds; 0: the slowest camera's rate

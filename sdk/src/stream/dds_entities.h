@@ -8,20 +8,28 @@
 
 namespace octocap::internal {
 
-// Owns a participant; deleting it deletes every entity created under it.
+// Owns a participant; deleting it deletes every entity created under it. With a security identity folder (see
+// dds_security.h) the participant joins only a secured network, and an entity its permissions refuse is an error
+// naming the identity and the topic.
 class DdsParticipant {
  public:
-  explicit DdsParticipant(uint32_t domain_id);
+  explicit DdsParticipant(uint32_t domain_id, const std::string& security = "");
   ~DdsParticipant();
   DdsParticipant(const DdsParticipant&) = delete;
   DdsParticipant& operator=(const DdsParticipant&) = delete;
   dds_entity_t get() const { return participant_; }
 
+  dds_entity_t topic(const dds_topic_descriptor_t* desc, const std::string& name);
+  // Take ownership of `qos` (deleted whatever happens).
+  dds_entity_t writer(dds_entity_t topic, dds_qos_t* qos, const char* what);
+  dds_entity_t reader(dds_entity_t topic, dds_qos_t* qos, const char* what);
+
  private:
-  dds_entity_t participant_;
+  dds_entity_t check(dds_entity_t rc, const char* what, dds_entity_t topic, const char* may) const;
+  dds_entity_t participant_ = 0;
+  std::string identity_;  // "" unsecured; else "identity 'KEYSTORE/NAME' (role R)"
 };
 
-dds_entity_t create_topic(dds_entity_t participant, const dds_topic_descriptor_t* desc, const std::string& name);
 // RELIABLE + TRANSIENT_LOCAL + KEEP_LAST 1.
 dds_qos_t* definition_qos();
 // The pose profile of `config` (see StreamConfig).

@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "stream/dds_entities.h"
+#include "stream/topics.h"
 #include "stream/wire_convert.h"
 
 namespace octocap::internal {
@@ -14,27 +15,22 @@ struct DdsPublisher::Impl {
   DefinitionBuffers definition;
   PoseBuffers pose;
   PeopleBuffers people;
-  explicit Impl(uint32_t domain) : participant(domain) {}
+  Impl(uint32_t domain, const std::string& security) : participant(domain, security) {}
 };
 
 DdsPublisher::DdsPublisher(const StreamConfig& config, LayoutId layout, uint32_t definition_counter)
-    : impl_(std::make_unique<Impl>(config.domain_id)),
+    : impl_(std::make_unique<Impl>(config.domain_id, config.security)),
       config_(config),
       capacity_(config.qos == StreamQos::record ? std::max<size_t>(config.history_depth, 64) : 1) {
-  const dds_entity_t p = impl_->participant.get();
-  const dds_entity_t def_topic = create_topic(p, &octocap_wire_SkeletonDefinition_desc, config.topic + "_definition");
+  DdsParticipant& p = impl_->participant;
+  const dds_entity_t def_topic =
+      p.topic(&octocap_wire_SkeletonDefinition_desc, topic_name(config.topic, kDefinitionTopicSuffix));
   // A several-people session writes People instead of Pose (the IDL says why).
-  const dds_entity_t pose_topic = config.several_people
-                                      ? create_topic(p, &octocap_wire_PeopleFrame_desc, config.topic + "_people")
-                                      : create_topic(p, &octocap_wire_Pose_desc, config.topic + "_pose");
-  dds_qos_t* dq = definition_qos();
-  const dds_entity_t def_writer = dds_create_writer(p, def_topic, dq, nullptr);
-  dds_delete_qos(dq);
-  check_dds(def_writer, "creating the definition writer");
-  dds_qos_t* pq = pose_qos(config);
-  impl_->pose_writer = dds_create_writer(p, pose_topic, pq, nullptr);
-  dds_delete_qos(pq);
-  check_dds(impl_->pose_writer, "creating the pose writer");
+  const dds_entity_t pose_topic =
+      config.several_people ? p.topic(&octocap_wire_PeopleFrame_desc, topic_name(config.topic, kPeopleTopicSuffix))
+                            : p.topic(&octocap_wire_Pose_desc, topic_name(config.topic, kPoseTopicSuffix));
+  const dds_entity_t def_writer = p.writer(def_topic, definition_qos(), "creating the definition writer");
+  impl_->pose_writer = p.writer(pose_topic, pose_qos(config), "creating the pose writer");
   impl_->definition_counter = definition_counter;
   fill_definition(layout, config.source_id, impl_->definition_counter, impl_->definition);
   check_dds(dds_write(def_writer, &impl_->definition.sample), "writing the skeleton definition");

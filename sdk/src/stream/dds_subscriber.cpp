@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "stream/dds_entities.h"
+#include "stream/topics.h"
 #include "stream/wire_convert.h"
 
 namespace octocap::internal {
@@ -10,28 +11,21 @@ namespace octocap::internal {
 struct DdsSubscriber::Impl {
   DdsParticipant participant;
   dds_entity_t def_reader = 0, pose_reader = 0, people_reader = 0, waitset = 0;
-  explicit Impl(uint32_t domain) : participant(domain) {}
+  Impl(uint32_t domain, const std::string& security) : participant(domain, security) {}
 };
 
 DdsSubscriber::DdsSubscriber(const StreamConfig& config)
-    : impl_(std::make_unique<Impl>(config.domain_id)), config_(config) {
-  const dds_entity_t p = impl_->participant.get();
-  const dds_entity_t def_topic = create_topic(p, &octocap_wire_SkeletonDefinition_desc, config.topic + "_definition");
-  const dds_entity_t pose_topic = create_topic(p, &octocap_wire_Pose_desc, config.topic + "_pose");
-  const dds_entity_t people_topic = create_topic(p, &octocap_wire_PeopleFrame_desc, config.topic + "_people");
-  dds_qos_t* dq = definition_qos();
-  impl_->def_reader = dds_create_reader(p, def_topic, dq, nullptr);
-  dds_delete_qos(dq);
-  check_dds(impl_->def_reader, "creating the definition reader");
-  dds_qos_t* pq = pose_qos(config);
-  impl_->pose_reader = dds_create_reader(p, pose_topic, pq, nullptr);
-  dds_delete_qos(pq);
-  check_dds(impl_->pose_reader, "creating the pose reader");
-  pq = pose_qos(config);
-  impl_->people_reader = dds_create_reader(p, people_topic, pq, nullptr);
-  dds_delete_qos(pq);
-  check_dds(impl_->people_reader, "creating the people reader");
-  impl_->waitset = check_dds(dds_create_waitset(p), "creating a waitset");
+    : impl_(std::make_unique<Impl>(config.domain_id, config.security)), config_(config) {
+  DdsParticipant& p = impl_->participant;
+  const dds_entity_t def_topic =
+      p.topic(&octocap_wire_SkeletonDefinition_desc, topic_name(config.topic, kDefinitionTopicSuffix));
+  const dds_entity_t pose_topic = p.topic(&octocap_wire_Pose_desc, topic_name(config.topic, kPoseTopicSuffix));
+  const dds_entity_t people_topic =
+      p.topic(&octocap_wire_PeopleFrame_desc, topic_name(config.topic, kPeopleTopicSuffix));
+  impl_->def_reader = p.reader(def_topic, definition_qos(), "creating the definition reader");
+  impl_->pose_reader = p.reader(pose_topic, pose_qos(config), "creating the pose reader");
+  impl_->people_reader = p.reader(people_topic, pose_qos(config), "creating the people reader");
+  impl_->waitset = check_dds(dds_create_waitset(p.get()), "creating a waitset");
   for (dds_entity_t reader : {impl_->pose_reader, impl_->people_reader}) {
     const dds_entity_t ready = check_dds(dds_create_readcondition(reader, DDS_ANY_STATE), "creating a read condition");
     check_dds(dds_waitset_attach(impl_->waitset, ready, 0), "attaching the read condition");

@@ -2,6 +2,7 @@
 
 #include "core/log.h"
 #include "stream/dds_entities.h"
+#include "stream/topics.h"
 
 namespace octocap::internal {
 
@@ -9,17 +10,14 @@ struct KeypointPublisher::Impl {
   DdsParticipant participant;
   dds_entity_t writer = 0;
   ViewKeypointsBuffers buffers;
-  explicit Impl(uint32_t domain) : participant(domain) {}
+  Impl(uint32_t domain, const std::string& security) : participant(domain, security) {}
 };
 
-KeypointPublisher::KeypointPublisher(uint32_t domain_id, const std::string& topic)
-    : impl_(std::make_unique<Impl>(domain_id)) {
-  const dds_entity_t p = impl_->participant.get();
-  const dds_entity_t t = create_topic(p, &octocap_wire_ViewKeypoints_desc, topic + "_keypoints2d");
-  dds_qos_t* q = keypoints_qos();
-  impl_->writer = dds_create_writer(p, t, q, nullptr);
-  dds_delete_qos(q);
-  check_dds(impl_->writer, "creating the keypoints writer");
+KeypointPublisher::KeypointPublisher(uint32_t domain_id, const std::string& topic, const std::string& security)
+    : impl_(std::make_unique<Impl>(domain_id, security)) {
+  DdsParticipant& p = impl_->participant;
+  const dds_entity_t t = p.topic(&octocap_wire_ViewKeypoints_desc, topic_name(topic, kKeypointsTopicSuffix));
+  impl_->writer = p.writer(t, keypoints_qos(), "creating the keypoints writer");
 }
 
 KeypointPublisher::~KeypointPublisher() = default;

@@ -11,7 +11,8 @@ namespace octocap::internal {
 
 class KeypointPublisher {
  public:
-  KeypointPublisher(uint32_t domain_id, const std::string& topic);
+  // `security`: a keystore identity folder ("" unsecured).
+  KeypointPublisher(uint32_t domain_id, const std::string& topic, const std::string& security = "");
   ~KeypointPublisher();
   KeypointPublisher(const KeypointPublisher&) = delete;
   KeypointPublisher& operator=(const KeypointPublisher&) = delete;

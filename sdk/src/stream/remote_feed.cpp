@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "stream/dds_entities.h"
+#include "stream/topics.h"
 
 namespace octocap::internal {
 namespace {
@@ -22,18 +23,15 @@ constexpr int64_t kTakeOverSilenceUs = 1000000;
 struct KeypointReceiver::Impl {
   DdsParticipant participant;
   dds_entity_t reader = 0, waitset = 0;
-  explicit Impl(uint32_t domain) : participant(domain) {}
+  Impl(uint32_t domain, const std::string& security) : participant(domain, security) {}
 };
 
-KeypointReceiver::KeypointReceiver(uint32_t domain_id, const std::string& topic)
-    : impl_(std::make_unique<Impl>(domain_id)) {
-  const dds_entity_t p = impl_->participant.get();
-  const dds_entity_t t = create_topic(p, &octocap_wire_ViewKeypoints_desc, topic + "_keypoints2d");
-  dds_qos_t* q = keypoints_qos();
-  impl_->reader = dds_create_reader(p, t, q, nullptr);
-  dds_delete_qos(q);
-  check_dds(impl_->reader, "creating the keypoints reader");
-  impl_->waitset = check_dds(dds_create_waitset(p), "creating a waitset");
+KeypointReceiver::KeypointReceiver(uint32_t domain_id, const std::string& topic, const std::string& security)
+    : impl_(std::make_unique<Impl>(domain_id, security)) {
+  DdsParticipant& p = impl_->participant;
+  const dds_entity_t t = p.topic(&octocap_wire_ViewKeypoints_desc, topic_name(topic, kKeypointsTopicSuffix));
+  impl_->reader = p.reader(t, keypoints_qos(), "creating the keypoints reader");
+  impl_->waitset = check_dds(dds_create_waitset(p.get()), "creating a waitset");
   const dds_entity_t ready = check_dds(dds_create_readcondition(impl_->reader, DDS_ANY_STATE), "creating a read condition");
   check_dds(dds_waitset_attach(impl_->waitset, ready, 0), "attaching the read condition");
   thread_ = std::thread([this] { run(); });

@@ -24,7 +24,8 @@ class RemoteFeed;
 // tells feeds the time so that silent ones notice.
 class KeypointReceiver {
  public:
-  KeypointReceiver(uint32_t domain_id, const std::string& topic);
+  // `security`: a keystore identity folder ("" unsecured).
+  KeypointReceiver(uint32_t domain_id, const std::string& topic, const std::string& security = "");
   ~KeypointReceiver();
   KeypointReceiver(const KeypointReceiver&) = delete;
   KeypointReceiver& operator=(const KeypointReceiver&) = delete;

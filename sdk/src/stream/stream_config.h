@@ -17,6 +17,7 @@ struct StreamConfig {
   uint32_t history_depth = 256;
   uint32_t source_id = 1;         // publisher: this rig's id; subscriber: 0 = any source
   bool several_people = false;    // publisher: everyone on "<topic>_people", not the first person on "<topic>_pose"
+  std::string security;           // a keystore identity folder (stream/keystore.h): DDS Security on; "" off
 };
 
 }  // namespace octocap::internal
