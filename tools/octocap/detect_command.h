@@ -32,6 +32,7 @@ struct DetectOptions {
   // --live: a capture node (cameras in, their 2D keypoints published over DDS for a hub's octocap live).
   bool live = false, publish_keypoints = false;
   std::vector<std::string> cameras, camera_names;
+  std::string camera_file;  // --cameras: more, with their names (camera_file.h)
   std::string node = "node1", topic = "octocap";
   std::string dds_security;  // a keystore identity folder (role node)
   unsigned domain = 0;

@@ -1,6 +1,7 @@
 // octocap live: cameras in, 3D out while the person moves; a status line each second, the per-stage table at the end.
 #include "live_command.h"
 
+#include "camera_file.h"
 #include "command_main.h"
 
 #include <atomic>
@@ -21,6 +22,8 @@ using live_common::interrupted;
 using live_common::state_name;
 
 int live(const LiveOptions& o) {
+  std::vector<std::string> cameras = o.cameras, unused_names;
+  if (!o.camera_file.empty()) read_camera_file(o.camera_file, cameras, unused_names);
   octocap_set_log_callback(live_common::log_to_stderr, OCTOCAP_LOG_WARNING, nullptr);
   const octocap::Calibration calib = octocap::Calibration::load(o.calibration);
   octocap_live_config_t cfg;
@@ -44,7 +47,7 @@ int live(const LiveOptions& o) {
                                               : OCTOCAP_FILTER_ONE_EURO;
   scfg.max_people = max_people_of(o.people);
   apply_outputs(o.out, scfg);
-  octocap::Live capture(cfg, scfg, calib, live_common::expand_camera_secrets(o.cameras));
+  octocap::Live capture(cfg, scfg, calib, live_common::expand_camera_secrets(cameras));
   capture.set_detector(o.detector.config());
   if (!o.record.empty()) capture.set_recording(o.record);
   octocap_up_axis_t up = OCTOCAP_UP_Y;
@@ -117,8 +120,8 @@ int live(const LiveOptions& o) {
     if (cam.nominal_fps > 0) std::printf(" (says %.1f)", cam.nominal_fps);
     if (cam.bad_pictures > 0)
       std::printf(", %llu bad pictures skipped", static_cast<unsigned long long>(cam.bad_pictures));
-    if (o.cameras[c].rfind("dds://", 0) == 0)
-      std::printf(", %s, clock offset %.1f ms", octocap_redact_credentials(o.cameras[c].c_str()), cam.clock_offset_ms);
+    if (cameras[c].rfind("dds://", 0) == 0)
+      std::printf(", %s, clock offset %.1f ms", octocap_redact_credentials(cameras[c].c_str()), cam.clock_offset_ms);
     else if (cam.stream_clock) std::printf(", times from the stream's clock");
     if (cam.last_error[0]) std::printf("; last error: %s", cam.last_error);
     std::printf("\n");
@@ -139,7 +142,7 @@ int live(const LiveOptions& o) {
       const octocap_camera_status_t cam = capture.camera(c);
       if (cam.used == 0)
         std::fprintf(stderr, "  camera %s (number %u, %s) delivered nothing%s%s\n", cam.name, c + 1,
-                     octocap_redact_credentials(o.cameras[c].c_str()), cam.last_error[0] ? ": " : "", cam.last_error);
+                     octocap_redact_credentials(cameras[c].c_str()), cam.last_error[0] ? ": " : "", cam.last_error);
     }
     if (s.last_error[0]) std::fprintf(stderr, "  the last frame set failed with: %s\n", s.last_error);
   }

@@ -7,6 +7,7 @@
 
 struct LiveOptions {
   std::vector<std::string> cameras;  // in calibration order
+  std::string camera_file;           // --cameras: more, from a file (camera_file.h)
   std::string calibration, output, csv, bvh;
   std::string record;                // a folder: pictures, 2D keypoints, times (octocap solve reads it again)
   double duration_s = 0;             // 0: until the cameras end (files) or Ctrl-C

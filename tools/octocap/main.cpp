@@ -89,6 +89,7 @@ int main(int argc, char** argv) {
   dimages->excludes(dlive);
   doutput->excludes(dlive);
   dc->add_option("--camera", detect.cameras, "--live: a camera (as for octocap live), once per camera")->needs(dlive);
+  dc->add_option("--cameras", detect.camera_file, "--live: cameras from a TOML file readable by its owner only ([[camera]] url = \"...\", name = \"cam01\"), after any --camera: passwords kept off the command line (docs/security.md)")->needs(dlive)->check(CLI::ExistingFile);
   dc->add_option("--camera-name", detect.camera_names, "--live: the CAMERA of dds://NODE/CAMERA, once per camera (default cam01, cam02, ...)")->needs(dlive);
   dc->add_flag("--publish-keypoints", detect.publish_keypoints, "--live: publish each camera's 2D keypoints over DDS (\"<topic>_keypoints2d\")")->needs(dlive);
   dc->add_option("--node", detect.node, "--live: this node's name, the NODE of dds://NODE/CAMERA")->capture_default_str();
@@ -105,7 +106,8 @@ int main(int argc, char** argv) {
 
   LiveOptions live;
   CLI::App* lv = app.add_subcommand("live", "Capture live from cameras (devices, rtsp://, http://, videos or picture folders as cameras) into 3D");
-  lv->add_option("--camera", live.cameras, "A camera, once per camera in calibration order: /dev/videoN or N, rtsp://..., http://... (MJPEG), a video file, a picture folder, or dds://NODE/CAMERA (a capture node's keypoints, on --domain/--topic); ${NAME} in it is taken from the environment (a password kept out of ps)")->required();
+  lv->add_option("--camera", live.cameras, "A camera, once per camera in calibration order: /dev/videoN or N, rtsp://..., http://... (MJPEG), a video file, a picture folder, or dds://NODE/CAMERA (a capture node's keypoints, on --domain/--topic); ${NAME} in it is taken from the environment (a password kept out of ps)");
+  lv->add_option("--cameras", live.camera_file, "Cameras from a TOML file readable by its owner only ([[camera]] url = \"...\"), after any --camera, in calibration order: passwords kept off the command line (docs/security.md)")->check(CLI::ExistingFile);
   lv->add_option("--calibration", live.calibration, "Calibration TOML (anipose / Pose2Sim)")->required()->check(CLI::ExistingFile);
   lv->add_option("--duration", live.duration_s, "Stop after this many seconds (0: when the cameras end, or Ctrl-C)")->capture_default_str();
   lv->add_option("--picture-rate", live.picture_rate_hz, "Rate of picture-folder cameras")->check(CLI::PositiveNumber)->capture_default_str();
@@ -141,6 +143,10 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   if (sc->parsed() && solve.keypoints.empty() && solve.images.empty()) {
     std::fprintf(stderr, "octocap solve: give --keypoints or --images\n");
+    return 2;
+  }
+  if (lv->parsed() && live.cameras.empty() && live.camera_file.empty()) {
+    std::fprintf(stderr, "octocap live: give --camera (once per camera) or --cameras FILE\n");
     return 2;
   }
   if (sc->parsed()) return run_solve(solve);

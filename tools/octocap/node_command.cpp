@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "camera_file.h"
 #include "command_main.h"
 #include "detect_command.h"
 #include "live_common.h"
@@ -13,8 +14,32 @@
 
 namespace {
 
+namespace {
+
+std::string default_camera_name(size_t index) {
+  char name[16];
+  std::snprintf(name, sizeof name, "cam%02zu", index + 1);
+  return name;
+}
+
+}  // namespace
+
 int node(const DetectOptions& o) {
-  if (o.cameras.empty()) throw std::runtime_error("--live needs at least one --camera");
+  std::vector<std::string> cameras = o.cameras, names = o.camera_names, file_names;
+  if (!o.camera_file.empty()) {
+    read_camera_file(o.camera_file, cameras, file_names);
+    // Named cameras keep their names; the others are cam01, cam02, ... by their place, as without a file.
+    if (!names.empty() && names.size() != o.cameras.size())
+      throw std::runtime_error("--camera-name: give one per --camera (the file's cameras are named in the file)");
+    bool any = !names.empty();
+    for (const std::string& n : file_names) any = any || !n.empty();
+    if (any) {
+      for (size_t c = names.size(); c < o.cameras.size(); ++c) names.push_back(default_camera_name(c));
+      for (size_t i = 0; i < file_names.size(); ++i)
+        names.push_back(file_names[i].empty() ? default_camera_name(o.cameras.size() + i) : file_names[i]);
+    }
+  }
+  if (cameras.empty()) throw std::runtime_error("--live needs at least one --camera (or --cameras FILE)");
   if (!o.publish_keypoints)
     throw std::runtime_error("--live detects for a hub: add --publish-keypoints (the keypoints go out over DDS)");
   octocap_set_log_callback(live_common::log_to_stderr, OCTOCAP_LOG_WARNING, nullptr);
@@ -28,7 +53,7 @@ int node(const DetectOptions& o) {
   set_identity(cfg.security, o.dds_security);
   cfg.picture_rate_hz = static_cast<float>(o.picture_rate_hz);
   cfg.detect_rate_hz = static_cast<float>(o.detect_rate_hz);
-  octocap::Node capture(cfg, live_common::expand_camera_secrets(o.cameras), o.camera_names);
+  octocap::Node capture(cfg, live_common::expand_camera_secrets(cameras), names);
   capture.set_detector(o.detector.config());
   live_common::catch_interrupts();
   capture.start();

@@ -13,7 +13,7 @@
 
 namespace {
 
-int sync(const SyncOptions& o) {
+int estimate_offsets(const SyncOptions& o) {
   octocap_set_log_callback(print_library_log, OCTOCAP_LOG_WARNING, nullptr);
   // What the options mean, checked here in their own words (the library would name its max_offset_frames).
   check_rate_option(o.rate_hz, false);
@@ -48,4 +48,4 @@ int sync(const SyncOptions& o) {
 
 }  // namespace
 
-int run_sync(const SyncOptions& options) { return run_reporting_errors("sync", options, sync); }
+int run_sync(const SyncOptions& options) { return run_reporting_errors("sync", options, estimate_offsets); }
