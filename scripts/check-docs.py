@@ -270,10 +270,18 @@ def check_commands(doc, binary, cache, rel, failures):
                                     (where, sub, ", ".join(sorted(subcommands)) or "its --help lists none"))
                     continue
                 name = "octocap " + sub
-                ok, options, _, help_text = help_options(binary, [sub], cache)
+                ok, options, nested, help_text = help_options(binary, [sub], cache)
                 if not ok:
                     failures.append("FAIL: %s: `%s --help` failed: %s" % (where, name, help_text.strip()[:200]))
                     continue
+                # A nested command (octocap security add): its own options.
+                word = re.match(r"[ \t]+([a-z][a-z-]*)", text[inv.end():])
+                if word and word.group(1) in nested:
+                    name += " " + word.group(1)
+                    ok, options, _, help_text = help_options(binary, [sub, word.group(1)], cache)
+                    if not ok:
+                        failures.append("FAIL: %s: `%s --help` failed: %s" % (where, name, help_text.strip()[:200]))
+                        continue
                 used = []
             used += sorted((offset, flag) for offset, (owner, flag) in owned.items() if owner == k)
             for offset, flag in used:
