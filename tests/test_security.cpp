@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -235,3 +236,34 @@ TEST_CASE("secured capture node: the keystore's node is heard by the hub; a fore
   CHECK_THAT(wrong.output, ContainsSubstring("role viewer"));
 }
 #endif
+
+TEST_CASE("secured configs through the C ABI: a bad identity fails the start, naming it; an unterminated path is refused",
+          "[security][misuse]") {
+  TempDir tmp;
+  octocap_subscriber_config_t sub;
+  octocap_subscriber_config_init(&sub);
+  CHECK(sub.security[0] == '\0');  // plain DDS unless asked
+  std::snprintf(sub.security, sizeof sub.security, "%s", (tmp / "nobody").c_str());
+  octocap_subscriber_t* s = nullptr;
+  const octocap_result_t r = octocap_subscriber_create(&sub, &s);
+#ifdef OCTOCAP_HAVE_DDS
+  CHECK(r == OCTOCAP_ERROR_IO);
+  CHECK_THAT(octocap_last_error(), ContainsSubstring("nobody: no such identity folder"));
+#else
+  CHECK(r == OCTOCAP_ERROR_UNSUPPORTED);
+#endif
+  CHECK(s == nullptr);
+  std::memset(sub.security, 'A', sizeof sub.security);
+  CHECK(octocap_subscriber_create(&sub, &s) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  CHECK_THAT(octocap_last_error(), ContainsSubstring("cfg.security is not NUL-terminated"));
+
+  octocap_session_config_t cfg;
+  octocap_session_config_init(&cfg);
+  CHECK(cfg.stream_security[0] == '\0');
+  octocap_live_config_t live;
+  octocap_live_config_init(&live);
+  CHECK(live.remote_security[0] == '\0');
+  octocap_node_config_t node;
+  octocap_node_config_init(&node);
+  CHECK(node.security[0] == '\0');
+}
