@@ -62,6 +62,10 @@ namespace Octocap
     /// <summary>(1.9) The network's arithmetic: Auto (bf16 where the CPU has it natively and the back end can), F32, Reduced.</summary>
     public enum Precision : int { Auto = 0, F32 = 1, Reduced = 2 }
     public enum PersonPick : int { All = 0, Largest = 1, MostConfident = 2, NearestPrevious = 3 }
+    /// <summary>(1.10) What a keystore identity may do on the network (octocap_security_role_t): a Node publishes 2D
+    /// keypoints, a Hub reads them and publishes skeletons (a live engine, a session that streams), a Viewer reads
+    /// skeletons.</summary>
+    public enum SecurityRole : int { Node = 0, Hub = 1, Viewer = 2 }
 
     /// <summary>The skeleton joints (octocap_joint_id_t): the paper's 14 and a root, then toes, heels and knuckles (1.4).</summary>
     public enum JointId : int
@@ -210,6 +214,10 @@ namespace Octocap
         public fixed byte VmcHost[64];
         /// <summary>People per frame: 1 (default) one person; N up to N, tracked with stable ids; 0 everyone (up to 16).</summary>
         public uint MaxPeople;
+        /// <summary>(1.10) Unused: it fills what was 1.3's padding, which a 1.3 caller never zeroed.</summary>
+        public uint Reserved110;
+        /// <summary>(1.10) "" (default): the stream is plain DDS; a keystore identity folder (role Hub): DDS Security.</summary>
+        public fixed byte StreamSecurity[512];
 
         /// <summary>The library's defaults for this struct's size (octocap_session_config_defaults).</summary>
         public static SessionConfig Default
@@ -232,6 +240,13 @@ namespace Octocap
         public void SetVmcHost(string host)
         {
             fixed (byte* h = VmcHost) NativeMethods.CopyUtf8(host, h, 64, "VMC host");
+        }
+
+        /// <summary>(1.10) The stream's keystore identity folder (KEYSTORE/NAME, <see cref="Keystore.AddIdentity"/>,
+        /// role Hub); null or "" for plain DDS.</summary>
+        public void SetStreamSecurity(string identityDir)
+        {
+            fixed (byte* s = StreamSecurity) NativeMethods.CopyUtf8(identityDir ?? "", s, 512, "stream security folder");
         }
     }
 
@@ -316,6 +331,8 @@ namespace Octocap
         public uint HistoryDepth;
         public uint SourceId;
         public fixed byte Topic[32];
+        /// <summary>(1.10) "" (default): plain DDS; a keystore identity folder (role Viewer or Hub): DDS Security.</summary>
+        public fixed byte Security[512];
 
         public static SubscriberConfig Default
         {
@@ -331,6 +348,13 @@ namespace Octocap
         public void SetTopic(string topic)
         {
             fixed (byte* t = Topic) NativeMethods.CopyUtf8(topic, t, 32, "topic");
+        }
+
+        /// <summary>(1.10) The subscriber's keystore identity folder (role Viewer or Hub); null or "" for plain DDS. The
+        /// publisher must be secured alike, or the two never meet.</summary>
+        public void SetSecurity(string identityDir)
+        {
+            fixed (byte* s = Security) NativeMethods.CopyUtf8(identityDir ?? "", s, 512, "security folder");
         }
     }
 
@@ -350,7 +374,7 @@ namespace Octocap
 
     /// <summary>octocap_live_config_t. Start from <see cref="LiveConfig.Default"/>.</summary>
     [StructLayout(LayoutKind.Sequential)]
-    public struct LiveConfig
+    public unsafe struct LiveConfig
     {
         public uint StructSize;
         public uint SyncToleranceUs;
@@ -369,6 +393,9 @@ namespace Octocap
         public float TargetFps;
         /// <summary>1.8. Grab to frame, ms, that the governor keeps sets within. Default 100.</summary>
         public uint LatencyBudgetMs;
+        /// <summary>(1.10) "" (default): remote cameras over plain DDS; a keystore identity folder (role Hub): DDS
+        /// Security, from nodes of the same keystore only.</summary>
+        public fixed byte RemoteSecurity[512];
 
         public static LiveConfig Default
         {
@@ -378,6 +405,12 @@ namespace Octocap
                 OctocapException.Check(NativeMethods.octocap_live_config_defaults(ref c, (uint)Marshal.SizeOf(typeof(LiveConfig))));
                 return c;
             }
+        }
+
+        /// <summary>(1.10) The keystore identity folder remote cameras are read with (role Hub); null or "" for plain DDS.</summary>
+        public void SetRemoteSecurity(string identityDir)
+        {
+            fixed (byte* s = RemoteSecurity) NativeMethods.CopyUtf8(identityDir ?? "", s, 512, "remote security folder");
         }
     }
 
@@ -541,6 +574,10 @@ namespace Octocap
         [DllImport(Lib)] internal static extern Result octocap_subscriber_get_keypoints3d(SubscriberHandle sub, Joint* joints, uint capacity, out uint count);
         [DllImport(Lib)] internal static extern Result octocap_subscriber_get_joints(SubscriberHandle sub, Joint* joints, uint capacity, out uint count);
         [DllImport(Lib)] internal static extern Result octocap_subscriber_get_bones(SubscriberHandle sub, CoordFrame frame, BonePose* bones, uint capacity, out uint count);
+
+        [DllImport(Lib)] internal static extern Result octocap_keystore_create(byte[] dir, uint validDays);
+        [DllImport(Lib)] internal static extern Result octocap_keystore_add_identity(byte[] dir, byte[] name, SecurityRole role, uint validDays);
+        [DllImport(Lib)] internal static extern Result octocap_keystore_check_identity(byte[] identityDir, out SecurityRole role);
 
         // Strings cross the boundary as UTF-8 both ways (never the platform's ANSI code page: Windows paths with
         // non-ASCII names must reach the library intact).

@@ -48,7 +48,8 @@ static void layout(void) {
   FIELD(octocap_session_config_t, stream_qos); FIELD(octocap_session_config_t, stream_history_depth);
   FIELD(octocap_session_config_t, stream_source_id); FIELD(octocap_session_config_t, stream_topic);
   FIELD(octocap_session_config_t, vmc_port); FIELD(octocap_session_config_t, vmc_host);
-  FIELD(octocap_session_config_t, max_people);
+  FIELD(octocap_session_config_t, max_people); FIELD(octocap_session_config_t, reserved_1_10);
+  FIELD(octocap_session_config_t, stream_security);
   SIZE(octocap_detector_config_t);
   FIELD(octocap_detector_config_t, struct_size); FIELD(octocap_detector_config_t, model);
   FIELD(octocap_detector_config_t, mode); FIELD(octocap_detector_config_t, person_pick);
@@ -72,6 +73,7 @@ static void layout(void) {
   FIELD(octocap_subscriber_config_t, struct_size); FIELD(octocap_subscriber_config_t, domain_id);
   FIELD(octocap_subscriber_config_t, qos); FIELD(octocap_subscriber_config_t, history_depth);
   FIELD(octocap_subscriber_config_t, source_id); FIELD(octocap_subscriber_config_t, topic);
+  FIELD(octocap_subscriber_config_t, security);
   SIZE(octocap_stream_info_t);
   FIELD(octocap_stream_info_t, frames_received); FIELD(octocap_stream_info_t, frames_lost);
   FIELD(octocap_stream_info_t, last_gap); FIELD(octocap_stream_info_t, restarts);
@@ -97,6 +99,7 @@ static void layout(void) {
   FIELD(octocap_live_config_t, picture_rate_hz); FIELD(octocap_live_config_t, remote_domain_id);
   FIELD(octocap_live_config_t, remote_topic); FIELD(octocap_live_config_t, quality);
   FIELD(octocap_live_config_t, target_fps); FIELD(octocap_live_config_t, latency_budget_ms);
+  FIELD(octocap_live_config_t, remote_security);
   SIZE(octocap_live_stats_t);
   FIELD(octocap_live_stats_t, struct_size); FIELD(octocap_live_stats_t, running); FIELD(octocap_live_stats_t, finished);
   FIELD(octocap_live_stats_t, camera_count); FIELD(octocap_live_stats_t, frame_sets);
