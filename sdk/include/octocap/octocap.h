@@ -1234,13 +1234,16 @@ OCTOCAP_API octocap_result_t octocap_subscriber_get_stream_info(const octocap_su
  */
 /** @{ */
 
-/** What an identity may do on the network. */
-typedef enum octocap_security_role_t {
+/** What an identity may do on the network: one of the OCTOCAP_ROLE_* values (an int32_t, as the other enumerated
+ *  parameters, so that any value a caller passes is defined behaviour and refused with INVALID_ARGUMENT). */
+typedef int32_t octocap_security_role_t;
+/** Values of ::octocap_security_role_t. */
+enum {
   OCTOCAP_ROLE_NODE = 0,        /**< Publishes 2D keypoints ("<topic>_keypoints2d"): a capture node. */
   OCTOCAP_ROLE_HUB = 1,         /**< Reads keypoints; publishes skeletons ("<topic>_definition", "_pose", "_people"):
                                      a live engine, a session that streams. */
   OCTOCAP_ROLE_VIEWER = 2       /**< Reads skeletons: a subscriber (a viewer, a game). */
-} octocap_security_role_t;
+};
 
 /**
  * Makes a keystore in `dir` (created if missing; readable by its owner only): KEYSTORE/ca.pem, ca.key.pem,
