@@ -49,10 +49,11 @@ void export_gltf(Scene& scene, const std::string& model_path, const std::string&
   const Character& c = scene.character();
   if (nodes.size() != c.nodes.size()) throw std::runtime_error("the model's hierarchy changed between two imports");
 
-  // Animated: the scene root (placement) and every node an octocap bone drives.
+  // Animated: the scene root (placement) and every node the retargeter turns (the root's and the spine's joints
+  // included, which may be nodes no octocap bone is named after).
   std::vector<int> animated = {0};
-  for (int b = 0; b < OCTOCAP_BONE_COUNT; ++b)
-    if (scene.bone_map()[b] > 0) animated.push_back(scene.bone_map()[b]);
+  for (int n : scene.retargeter().driven_nodes())
+    if (n > 0) animated.push_back(n);
 
   auto* animation = new aiAnimation();
   animation->mName = aiString("octocap");

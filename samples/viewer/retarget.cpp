@@ -95,6 +95,26 @@ bool optional_bone(int b) {
          b == OCTOCAP_BONE_R_FOOT || b == OCTOCAP_BONE_L_HAND || b == OCTOCAP_BONE_R_HAND;
 }
 
+// Nodes from `node` up to the root of its tree, node first.
+std::vector<int> ancestry(const Character& c, int node) {
+  std::vector<int> out;
+  for (int n = node; n >= 0; n = c.nodes[n].parent) out.push_back(n);
+  return out;
+}
+
+// The deepest node that is `a` or an ancestor of it and also `b` or an ancestor of b; -1 in separate trees.
+int common_ancestor(const Character& c, int a, int b) {
+  const std::vector<int> up_b = ancestry(c, b);
+  for (int n : ancestry(c, a))
+    if (std::find(up_b.begin(), up_b.end(), n) != up_b.end()) return n;
+  return -1;
+}
+
+bool is_ancestor(const Character& c, int ancestor, int node) {
+  const std::vector<int> up = ancestry(c, node);
+  return std::find(up.begin(), up.end(), ancestor) != up.end();
+}
+
 }  // namespace
 
 BoneMap find_bone_map(const Character& c) {
@@ -148,6 +168,27 @@ Retargeter::Retargeter(const Character& c, const BoneMap& map) : c_(c), map_(map
   if (!missing.empty()) throw std::runtime_error(c.source + ": no model bone found for " + missing + " (give a --bone-map)");
   rest_locals_ = c.rest_locals();
   rest_globals_ = c.globals(rest_locals_);
+
+  // The root's node: the joint both thighs and the spine hang from. A model whose root bone sits on a sibling branch
+  // (the default character's B_LowerPelvis, beside B_Root_Pelvis_T that carries the spine) would otherwise leave
+  // every joint between the root and the spine at rest while the body turns: the waist tears.
+  root_node_ = common_ancestor(c, common_ancestor(c, map[OCTOCAP_BONE_L_UPPER_LEG], map[OCTOCAP_BONE_R_UPPER_LEG]),
+                               map[OCTOCAP_BONE_TORSO]);
+  if (root_node_ < 0 || root_node_ == map[OCTOCAP_BONE_TORSO])
+    throw std::runtime_error(c.source + ": the thighs (" + c.nodes[map[OCTOCAP_BONE_L_UPPER_LEG]].name + ", " +
+                             c.nodes[map[OCTOCAP_BONE_R_UPPER_LEG]].name + ") and the spine (" +
+                             c.nodes[map[OCTOCAP_BONE_TORSO]].name +
+                             ") have no common parent joint to carry the root's rotation (give a --bone-map)");
+  // The spine: from below the root's node up to the chest, where the arms branch off (below the neck's node).
+  int chest = common_ancestor(c, common_ancestor(c, map[OCTOCAP_BONE_L_UPPER_ARM], map[OCTOCAP_BONE_R_UPPER_ARM]),
+                              map[OCTOCAP_BONE_HEAD]);
+  if (chest == map[OCTOCAP_BONE_HEAD]) chest = c.nodes[chest].parent;
+  if (chest >= 0 && chest != root_node_ && is_ancestor(c, root_node_, chest) && is_ancestor(c, map[OCTOCAP_BONE_TORSO], chest)) {
+    for (int n = chest; n != root_node_; n = c.nodes[n].parent) spine_.push_back(n);
+    std::reverse(spine_.begin(), spine_.end());
+  } else {
+    spine_ = {map[OCTOCAP_BONE_TORSO]};  // arms off the chain: the torso's node takes the whole rotation
+  }
   auto pos = [&](int node) { return Eigen::Vector3f(rest_globals_[node].translation()); };
 
   // The model's own axes from its rest pose: left from the right to the left thigh, up from the hips to the neck.
@@ -198,38 +239,73 @@ Retargeter::Retargeter(const Character& c, const BoneMap& map) : c_(c), map_(map
   }
 }
 
+std::vector<int> Retargeter::driven_nodes() const {
+  std::vector<int> out = {root_node_};
+  out.insert(out.end(), spine_.begin(), spine_.end());
+  for (int b = 0; b < OCTOCAP_BONE_COUNT; ++b)
+    if (map_[b] >= 0 && b != OCTOCAP_BONE_ROOT && b != OCTOCAP_BONE_TORSO &&
+        std::find(out.begin(), out.end(), map_[b]) == out.end())
+      out.push_back(map_[b]);
+  return out;
+}
+
 std::vector<Eigen::Affine3f> Retargeter::pose(const octocap_bone_pose_t* bones) const {
+  const Eigen::Matrix3f axes = to_rig_.transpose();
+  // The measured rotation of bone b from the template, in model axes, with the turn of the model's rest bone onto
+  // the template's: a node's posed global is this times its rest global.
+  auto measured = [&](int b) {
+    const octocap_quat_t& q = bones[b].global_rotation;
+    const Eigen::Matrix3f rig = Eigen::Quaternionf(q.w, q.x, q.y, q.z).toRotationMatrix();
+    return Eigen::Quaternionf(axes * rig * to_rig_ * correction_[b].toRotationMatrix()).normalized();
+  };
   std::vector<int> bone_of(c_.nodes.size(), -1);
   for (int b = 0; b < OCTOCAP_BONE_COUNT; ++b)
-    if (map_[b] >= 0) bone_of[map_[b]] = b;
-  const Eigen::Matrix3f axes = to_rig_.transpose();
+    if (map_[b] >= 0 && b != OCTOCAP_BONE_ROOT && b != OCTOCAP_BONE_TORSO) bone_of[map_[b]] = b;
+  // Node -> its rotation from rest, for the nodes the root and the torso drive.
+  std::vector<int> share_of(c_.nodes.size(), -1);  // spine index, -2 for the root's node
+  if (bones[OCTOCAP_BONE_ROOT].valid) share_of[root_node_] = -2;
+  const bool spread = bones[OCTOCAP_BONE_TORSO].valid;
+  const Eigen::Quaternionf hips = bones[OCTOCAP_BONE_ROOT].valid ? measured(OCTOCAP_BONE_ROOT) : Eigen::Quaternionf::Identity();
+  const Eigen::Quaternionf torso = spread ? measured(OCTOCAP_BONE_TORSO) : Eigen::Quaternionf::Identity();
+  const Eigen::Quaternionf against_hips = hips.conjugate() * torso;
+  if (spread)
+    for (size_t k = 0; k < spine_.size(); ++k) share_of[spine_[k]] = static_cast<int>(k);
+
   std::vector<Eigen::Affine3f> g(c_.nodes.size());
   for (size_t i = 0; i < c_.nodes.size(); ++i) {
     const int parent = c_.nodes[i].parent;
     g[i] = parent < 0 ? rest_locals_[i] : g[parent] * rest_locals_[i];
-    const int b = bone_of[i];
-    if (b < 0 || !bones[b].valid) continue;
-    const octocap_quat_t& q = bones[b].global_rotation;
-    const Eigen::Matrix3f rig = Eigen::Quaternionf(q.w, q.x, q.y, q.z).toRotationMatrix();
-    // The measured rotation from the template, in model axes, applied to the rest pose turned onto the template.
-    const Eigen::Matrix3f rotation = axes * rig * to_rig_ * correction_[b].toRotationMatrix() *
-                                     rest_globals_[i].linear();
-    g[i].linear() = rotation;
+    Eigen::Quaternionf from_rest;
+    if (share_of[i] == -2) {
+      from_rest = hips;
+    } else if (share_of[i] >= 0) {
+      // Node k of n takes (k + 1) / n of the torso's turn against the hips; without a measured root, the hips stay.
+      const float share = static_cast<float>(share_of[i] + 1) / static_cast<float>(spine_.size());
+      from_rest = hips * Eigen::Quaternionf::Identity().slerp(share, against_hips);
+    } else if (bone_of[i] >= 0 && bones[bone_of[i]].valid) {
+      from_rest = measured(bone_of[i]);
+    } else {
+      continue;  // unmapped or unmeasured: at rest relative to its parent
+    }
+    g[i].linear() = from_rest.toRotationMatrix() * rest_globals_[i].linear();
   }
   return g;
 }
 
-Eigen::Affine3f Retargeter::placement(const octocap_bone_pose_t* bones) const {
+Eigen::Affine3f Retargeter::placement(const octocap_bone_pose_t* bones, const std::vector<Eigen::Affine3f>& globals,
+                                      float scale) const {
   const octocap_bone_pose_t& upper = bones[OCTOCAP_BONE_L_UPPER_LEG];
   const octocap_bone_pose_t& lower = bones[OCTOCAP_BONE_L_LOWER_LEG];
-  const float scale = upper.valid && lower.valid && leg_length_ > 0 ? (upper.length_m + lower.length_m) / leg_length_ : 1.0f;
+  if (scale <= 0)
+    scale = upper.valid && lower.valid && leg_length_ > 0 ? (upper.length_m + lower.length_m) / leg_length_ : 1.0f;
   const Eigen::Vector3f root(bones[OCTOCAP_BONE_ROOT].head_position[0], bones[OCTOCAP_BONE_ROOT].head_position[1],
                              bones[OCTOCAP_BONE_ROOT].head_position[2]);
-  const Eigen::Vector3f model_root = rest_globals_[map_[OCTOCAP_BONE_ROOT]].translation();
+  const Eigen::Vector3f hip_centre =
+      (globals[map_[OCTOCAP_BONE_L_UPPER_LEG]].translation() + globals[map_[OCTOCAP_BONE_R_UPPER_LEG]].translation()) / 2;
   Eigen::Affine3f t = Eigen::Affine3f::Identity();
   t.translate(root);
   t.linear() = scale * to_rig_;
-  t.translate(-model_root);
+  t.translate(-hip_centre);
   return t;
 }
 

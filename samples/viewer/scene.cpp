@@ -126,17 +126,8 @@ void Scene::pose_bones(Figure& figure, const octocap_bone_pose_t* bones) {
   for (size_t m = 0; m < character_.meshes.size(); ++m)
     skin_mesh(character_.meshes[m], skin, Eigen::Affine3f::Identity(), options_.skinning, figure.skinned[m]);
 
-  // Placement with the take's fixed scale: the model root on the measured root.
-  const Eigen::Affine3f unit = retarget_->placement(bones);
-  const float frame_scale = unit.linear().col(0).norm();
-  figure.placement = unit;
-  if (frame_scale > 0) {
-    const Eigen::Vector3f root_model = globals[map_[OCTOCAP_BONE_ROOT]].translation();
-    const Eigen::Vector3f root_world = unit * root_model;
-    figure.placement.linear() = unit.linear() * (figure.scale / frame_scale);
-    figure.placement.translation() = root_world - figure.placement.linear() * root_model;
-  }
-
+  // Placement with the figure's fixed scale (the take's median leg, a live person's first), else this pose's legs.
+  figure.placement = retarget_->placement(bones, globals, figure.scale);
   if (bones[OCTOCAP_BONE_ROOT].valid)
     figure.root = {bones[OCTOCAP_BONE_ROOT].head_position[0], bones[OCTOCAP_BONE_ROOT].head_position[1],
              bones[OCTOCAP_BONE_ROOT].head_position[2]};

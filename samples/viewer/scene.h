@@ -67,6 +67,7 @@ class Scene {
   const Eigen::Vector3f& root() const { return first().root; }
   const Character& character() const { return character_; }
   const BoneMap& bone_map() const { return map_; }
+  const Retargeter& retargeter() const { return *retarget_; }
   // The character's own joints at the current pose, rig frame (where its limbs really are: the ground truth
   // for rendered views). NaN where the map has no bone.
   const std::array<Eigen::Vector3f, OCTOCAP_JOINT_COUNT>& character_joints() const { return first().joints; }
