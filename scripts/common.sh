@@ -9,7 +9,7 @@ ensure_deps() {
              libcatch2-dev libopencv-calib3d-dev libopencv-imgcodecs-dev libopencv-contrib-dev libopencv-videoio-dev libopencv-video-dev libcurl4-openssl-dev libturbojpeg0-dev libceres-dev libtbb12 assimp-testmodels python3-pip python3-venv mono-devel \
              nunit-console libnunit-cil-dev cyclonedds-dev cyclonedds-tools liblo-dev \
              libassimp-dev libosmesa6-dev libglfw3-dev xvfb ffmpeg clang-14 gir1.2-gst-rtsp-server-1.0 python3-gi \
-             gstreamer1.0-plugins-good gstreamer1.0-plugins-bad; do
+             gstreamer1.0-plugins-good gstreamer1.0-plugins-bad doxygen libssl-dev; do
     dpkg -s "$pkg" >/dev/null 2>&1 || { missing=1; break; }
   done
   command -v npm >/dev/null 2>&1 || missing=1

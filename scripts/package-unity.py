@@ -16,6 +16,9 @@ project's references survive an update. Native plugins are marked for the Linux 
 """
 import hashlib, os, re, shutil, subprocess, sys, tarfile
 
+sys.dont_write_bytecode = True  # importing the module below leaves no scripts/__pycache__ in the source tree
+from header_version import header_version  # scripts/header_version.py, beside this file
+
 NAME = "com.octocap.avatar"
 
 
@@ -65,12 +68,6 @@ def plugin_importer(native):
     return ("PluginImporter:\n  externalObjects: {}\n  serializedVersion: 2\n  iconMap: {}\n  executionOrder: {}\n"
             "  defineConstraints: []\n  isPreloaded: 0\n  isOverridable: 0\n  isExplicitlyReferenced: 0\n"
             "  validateReferences: 1\n  platformData:\n" + platforms)
-
-
-def header_version(src):
-    text = open(os.path.join(src, "sdk/include/octocap/octocap.h")).read()
-    parts = [re.search(r"#define OCTOCAP_VERSION_%s (\d+)" % p, text).group(1) for p in ("MAJOR", "MINOR", "PATCH")]
-    return ".".join(parts)
 
 
 def soname(lib):

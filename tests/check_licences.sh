@@ -14,8 +14,7 @@ for soname in $(readelf -d "$lib" | awk '/NEEDED/ {gsub(/[\[\]]/, "", $5); print
   grep -qF "$base" "$src/NOTICE" || fail "NOTICE does not name $soname, which $(basename "$lib") loads"
 done
 header="$src/sdk/include/octocap/octocap.h"
-version="$(awk '/#define OCTOCAP_VERSION_(MAJOR|MINOR|PATCH) / {printf "%s%s", sep, $3; sep="."}' "$header")"
-[ -n "$version" ] || fail "no version in $header"
+version="$(python3 "$src/scripts/header_version.py" "$src")" || fail "no version in $header"
 unity="$src/bindings/csharp/Unity/package.json"
 python3 - "$unity" "$version" <<'PY' || status=1
 import json, sys

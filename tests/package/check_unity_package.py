@@ -19,8 +19,11 @@ def fail(msg):
     print("FAIL: " + msg)
 
 
-header = open(os.path.join(src, "sdk/include/octocap/octocap.h")).read()
-version = ".".join(re.search(r"#define OCTOCAP_VERSION_%s (\d+)" % p, header).group(1) for p in ("MAJOR", "MINOR", "PATCH"))
+sys.path.insert(0, os.path.join(src, "scripts"))
+sys.dont_write_bytecode = True  # no scripts/__pycache__ in the source tree
+from header_version import header_version  # scripts/header_version.py: the header's version, one reader for all
+
+version = header_version(src)
 
 # The manifest: the fields UPM requires, the header's version, an SPDX licence.
 manifest = json.load(open(os.path.join(pkg, "package.json")))
