@@ -46,6 +46,7 @@ int live(const LiveOptions& o) {
                 : o.filter == "oneeuro-fixed" ? OCTOCAP_FILTER_ONE_EURO_FIXED
                                               : OCTOCAP_FILTER_ONE_EURO;
   scfg.max_people = max_people_of(o.people);
+  scfg.foot_lock = o.foot_lock ? 1 : 0;
   apply_outputs(o.out, scfg);
   octocap::Live capture(cfg, scfg, calib, live_common::expand_camera_secrets(cameras));
   capture.set_detector(o.detector.config());

@@ -46,6 +46,11 @@ void add_people_option(CLI::App* app, std::string& people) {
       ->check(CLI::IsMember({"auto"}) | CLI::Range(1, 16))->capture_default_str();
 }
 
+// Solve and live alike.
+void add_foot_lock_flag(CLI::App* app, bool& foot_lock) {
+  app->add_flag("--foot-lock", foot_lock, "Hold planted feet still: a foot on the floor keeps its place while the solve's noise would make it skate (its ankle, knee and foot; contacts are reported either way)");
+}
+
 int main(int argc, char** argv) {
   CLI::App app{"octocap: markerless multi-camera motion capture"};
   app.require_subcommand(1);
@@ -73,6 +78,7 @@ int main(int argc, char** argv) {
   sc->add_option("--rate", solve.rate_hz, "Frame rate of the recording, Hz (default: with --images the videos' own, else 30)")->check(CLI::PositiveNumber);
   sc->add_option("--threads", solve.threads, "Worker threads (0: all cores)")->capture_default_str();
   add_people_option(sc, solve.people);
+  add_foot_lock_flag(sc, solve.foot_lock);
   sc->add_option("--sync", solve.sync, "Sync TOML (octocap sync): each camera's keypoints taken at its own time offset")->check(CLI::ExistingFile);
   sc->add_option("--ground-truth", solve.ground_truth, "CSV of true 3D keypoints: report the error against it")->check(CLI::ExistingFile);
   sc->add_flag("--quiet", solve.quiet, "No progress on stderr");
@@ -121,6 +127,7 @@ int main(int argc, char** argv) {
   add_output_options(lv, live.out);
   lv->add_flag("--quiet", live.quiet, "No status line on stderr");
   add_people_option(lv, live.people);
+  add_foot_lock_flag(lv, live.foot_lock);
   add_detector_options(lv, live.detector);
   lv->add_option("--quality", live.quality, "governed: hold --target-fps within --latency-budget, choosing each set how many views the network runs on and which model (docs/benchmarks.md \"Real time\"); max: every view with the model named, whatever the rate")->check(CLI::IsMember({"governed", "max"}))->capture_default_str();
   lv->add_option("--target-fps", live.target_fps, "Sets a second the governor holds (0: the slowest camera's rate)")->check(CLI::Range(0.0, 1000.0))->capture_default_str();

@@ -117,6 +117,7 @@ int solve(const SolveOptions& o) {
   cfg.worker_threads = o.threads;
   cfg.first_frame_index = o.start_frame;
   cfg.max_people = max_people_of(o.people);
+  cfg.foot_lock = o.foot_lock ? 1 : 0;
   const bool several = cfg.max_people != 1;
   apply_outputs(o.out, cfg);
   if (!o.debug_images.empty()) std::filesystem::create_directories(o.debug_images);

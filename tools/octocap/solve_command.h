@@ -22,6 +22,7 @@ struct SolveOptions {
   unsigned start_frame = 0;
   double linger_s = 0.5;
   unsigned wait_subscribers = 0;
+  bool foot_lock = false;    // --foot-lock: planted feet held still
   std::string people = "1";  // "auto" or N: several people, one TRC (and BVH) per person, a CSV with a person column
 };
 

@@ -17,7 +17,7 @@ namespace Octocap
     {
         public const uint AbiVersion = 1;
         /// <summary>The header version these bindings mirror (OCTOCAP_VERSION_NUMBER: major * 10000 + minor * 100 + patch).</summary>
-        public const uint BindingsVersionNumber = 11000;
+        public const uint BindingsVersionNumber = 11100;
 
         public static string Version => NativeMethods.Utf8(NativeMethods.octocap_version());
         public static uint VersionNumber => NativeMethods.octocap_version_number();

@@ -167,6 +167,15 @@ namespace Octocap
         public uint ViewsWithPerson;
         public float MeanReprojectionErrorPx;
         public float Confidence;
+        /// <summary>(1.11) Feet planted on the floor this frame: <see cref="FootRight"/>, <see cref="FootLeft"/>.</summary>
+        public uint FootContacts;
+
+        /// <summary>FootContacts: the right foot is planted (OCTOCAP_FOOT_RIGHT).</summary>
+        public const uint FootRight = 1;
+        /// <summary>FootContacts: the left foot is planted (OCTOCAP_FOOT_LEFT).</summary>
+        public const uint FootLeft = 2;
+        public bool RightFootPlanted => (FootContacts & FootRight) != 0;
+        public bool LeftFootPlanted => (FootContacts & FootLeft) != 0;
     }
 
     [StructLayout(LayoutKind.Sequential)]
@@ -218,6 +227,10 @@ namespace Octocap
         public uint Reserved110;
         /// <summary>(1.10) "" (default): the stream is plain DDS; a keystore identity folder (role Hub): DDS Security.</summary>
         public fixed byte StreamSecurity[512];
+        /// <summary>(1.11) 0 (default): joints as solved; 1: a planted foot holds still (its ankle, knee and foot).</summary>
+        public uint FootLock;
+        /// <summary>(1.11) Unused: keeps the struct free of padding.</summary>
+        public uint Reserved111;
 
         /// <summary>The library's defaults for this struct's size (octocap_session_config_defaults).</summary>
         public static SessionConfig Default

@@ -50,6 +50,7 @@ static void layout(void) {
   FIELD(octocap_session_config_t, vmc_port); FIELD(octocap_session_config_t, vmc_host);
   FIELD(octocap_session_config_t, max_people); FIELD(octocap_session_config_t, reserved_1_10);
   FIELD(octocap_session_config_t, stream_security);
+  FIELD(octocap_session_config_t, foot_lock); FIELD(octocap_session_config_t, reserved_1_11);
   SIZE(octocap_detector_config_t);
   FIELD(octocap_detector_config_t, struct_size); FIELD(octocap_detector_config_t, model);
   FIELD(octocap_detector_config_t, mode); FIELD(octocap_detector_config_t, person_pick);
@@ -91,7 +92,7 @@ static void layout(void) {
   FIELD(octocap_person_t, struct_size); FIELD(octocap_person_t, id); FIELD(octocap_person_t, keypoints_solved);
   FIELD(octocap_person_t, keypoints_total); FIELD(octocap_person_t, joints_solved);
   FIELD(octocap_person_t, views_with_person); FIELD(octocap_person_t, mean_reprojection_error_px);
-  FIELD(octocap_person_t, confidence);
+  FIELD(octocap_person_t, confidence); FIELD(octocap_person_t, foot_contacts);
   SIZE(octocap_live_config_t);
   FIELD(octocap_live_config_t, struct_size); FIELD(octocap_live_config_t, sync_tolerance_us);
   FIELD(octocap_live_config_t, max_wait_us); FIELD(octocap_live_config_t, open_timeout_ms);

@@ -1,6 +1,7 @@
 #include "capi/frame_queries.h"
 
 #include "capi/boundary.h"
+#include "capi/struct_versions.h"
 #include "rig/engine_frames.h"
 
 namespace octocap::internal::capi {
@@ -59,7 +60,7 @@ void query_summary(const FrameResult& f, octocap_frame_summary_t* out) {
 void query_person(const FrameResult& f, uint32_t person, octocap_person_t* out) {
   check_person(f, person);
   const PersonResult& r = f.people[person];
-  fill_sized(out, sizeof(octocap_person_t), "octocap_person_t", [&](octocap_person_t& p) {
+  fill_sized(out, kPersonSize10, "octocap_person_t", [&](octocap_person_t& p) {
     p.id = r.id;
     p.keypoints_solved = r.keypoints_solved;
     p.keypoints_total = static_cast<uint32_t>(r.keypoints.size());
@@ -69,6 +70,7 @@ void query_person(const FrameResult& f, uint32_t person, octocap_person_t* out) 
     double conf = 0;
     for (const PointResult& k : r.keypoints) conf += k.valid ? k.confidence : 0;
     p.confidence = p.keypoints_solved ? static_cast<float>(conf / p.keypoints_solved) : 0.f;
+    p.foot_contacts = (r.foot_contact[0] ? OCTOCAP_FOOT_RIGHT : 0u) | (r.foot_contact[1] ? OCTOCAP_FOOT_LEFT : 0u);
   });
 }
 

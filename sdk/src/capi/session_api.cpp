@@ -68,6 +68,8 @@ SessionConfig session_config(const octocap_session_config_t* given) {
     throw Error(Errc::invalid_argument, "config.vmc_host must be a NUL-terminated host name");
   s.vmc_host.assign(c.vmc_host, host_len);
   s.max_people = c.max_people;
+  if (c.foot_lock > 1) throw Error(Errc::invalid_argument, "config.foot_lock must be 0 or 1");
+  s.foot_lock = c.foot_lock != 0;
   s.detector = capi::detector_config(detector);
   return s;
 }
@@ -106,6 +108,7 @@ octocap_session_config_t c_session_config(const SessionConfig& s) {
   c.vmc_port = s.vmc_port;
   capi::copy_name(c.vmc_host, sizeof c.vmc_host, s.vmc_host);
   c.max_people = s.max_people;
+  c.foot_lock = s.foot_lock ? 1 : 0;
   return c;
 }
 

@@ -14,8 +14,8 @@
 namespace octocap::internal::capi {
 
 // octocap_session_config_t: 0.1 (84), 0.2 streaming (152), 0.2 VMC = 1.0 (216), 0.3 with the detector config nested
-// at its end (760; see LegacySessionConfig03), 1.3 max_people (224), 1.10 stream_security (736).
-constexpr std::initializer_list<uint32_t> kSessionConfigSizes = {84, 152, 216, 760, 224, 736};
+// at its end (760; see LegacySessionConfig03), 1.3 max_people (224), 1.10 stream_security (736), 1.11 foot_lock (744).
+constexpr std::initializer_list<uint32_t> kSessionConfigSizes = {84, 152, 216, 760, 224, 736, 744};
 // The size of the 1.0 session config, which the 0.3 layout nests its detector config after.
 constexpr uint32_t kSessionConfigSize10 = 216;
 // octocap_detector_config_t: 0.3 (540), 0.3 parallel_views = 1.0 (544), 1.5 views_per_frame and device (552), 1.9
@@ -39,9 +39,15 @@ struct LegacySessionConfig03 {
   unsigned char base[kSessionConfigSize10];
   alignas(4) unsigned char detector[kDetectorConfigSize10];
 };
-static_assert(sizeof(octocap_session_config_t) == 736 && offsetof(octocap_session_config_t, max_people) == 216 &&
-                  offsetof(octocap_session_config_t, stream_security) == 224,
-              "1.3's session config is 1.0's and max_people, 1.10 adds stream_security: grow it only at its end");
+static_assert(sizeof(octocap_session_config_t) == 744 && offsetof(octocap_session_config_t, max_people) == 216 &&
+                  offsetof(octocap_session_config_t, stream_security) == 224 &&
+                  offsetof(octocap_session_config_t, foot_lock) == 736,
+              "1.3's session config is 1.0's and max_people, 1.10 adds stream_security, 1.11 foot_lock: grow it only at "
+              "its end");
+// octocap_person_t, an output struct filled up to the caller's size: 1.0 (32), 1.11 foot_contacts (36).
+constexpr uint32_t kPersonSize10 = 32;
+static_assert(sizeof(octocap_person_t) == 36 && offsetof(octocap_person_t, foot_contacts) == kPersonSize10,
+              "octocap_person_t grows only at its end");
 static_assert(offsetof(LegacySessionConfig03, detector) == 216 && sizeof(LegacySessionConfig03) == 760,
               "the 0.3 layout must stay byte-exact");
 static_assert(sizeof(octocap_detector_config_t) == 560 && sizeof(octocap_subscriber_config_t) == 564 &&

@@ -52,6 +52,7 @@ struct PersonResult {
   uint32_t keypoints_solved = 0;
   uint32_t views_with_person = 0;
   double mean_reprojection_error_px = 0;
+  std::array<bool, 2> foot_contact{};  // right, left: planted this frame (rig/foot_lock.h)
   bool has_pose() const {
     for (const PointResult& p : keypoints) if (p.valid) return true;
     for (const PointResult& p : joints) if (p.valid) return true;

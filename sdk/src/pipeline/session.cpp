@@ -284,6 +284,7 @@ void Session::solve_one(const std::vector<std::vector<Person2D>>& usable, const 
   if (with_person < static_cast<uint32_t>(config_.min_views)) {
     single_.raw_previous.clear();
     for (auto& f : single_.filters) f.reset();
+    single_.feet.reset();
     return;
   }
   PersonResult person = blank;
@@ -330,8 +331,10 @@ void Session::solve_several(const std::vector<std::vector<Person2D>>& usable,
   }
   // Tracks not seen this frame: their filters start again when they come back (as the one person's do).
   for (auto& [id, state] : states_)
-    if (std::find(ids.begin(), ids.end(), id) == ids.end())
+    if (std::find(ids.begin(), ids.end(), id) == ids.end()) {
       for (auto& f : state.filters) f.reset();
+      state.feet.reset();
+    }
   std::sort(people.begin(), people.end(), [](const PersonResult& a, const PersonResult& b) { return a.id < b.id; });
   frame_.people = std::move(people);
 }
@@ -439,6 +442,17 @@ void Session::finish_person(PersonResult& person, PersonState& state, double dt)
   cues.head_forward = rig_point(nose_) - rig_joints[kHead];
   cues.r_palm_across = rig_point(r_index_) - rig_point(r_pinky_);
   cues.l_palm_across = rig_point(l_index_) - rig_point(l_pinky_);
+  // Feet: contacts always (engines run their own IK on them); with foot_lock, the planted ankles, their knees and
+  // feet go back into the joints and the bones.
+  SkeletonJoints locked = rig_joints;
+  const FootContacts contacts = state.feet.apply(locked, dt);
+  person.foot_contact = {contacts.right, contacts.left};
+  if (config_.foot_lock) {
+    for (int j = 0; j < kJointCount; ++j)
+      if (person.joints[j].valid && locked[j] != rig_joints[j])
+        person.joints[j].position = z_up_ ? yup_to_zup(locked[j]) : locked[j];
+    rig_joints = locked;
+  }
   person.bones = state.bone_solver.solve(rig_joints, cues);
 }
 
