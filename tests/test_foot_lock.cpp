@@ -65,7 +65,11 @@ std::vector<SkeletonJoints> measured(const Take& t, unsigned seed) {
   for (const SkeletonJoints& s : t.joints) {
     SkeletonJoints m;
     for (int j = 0; j < kJointCount; ++j) {
-      const Eigen::Vector3d n(noise(rng), noise(rng), noise(rng));
+      // One draw per statement: the order of a constructor's arguments is the compiler's (gcc and clang differ).
+      const double nx = noise(rng);
+      const double ny = noise(rng);
+      const double nz = noise(rng);
+      const Eigen::Vector3d n(nx, ny, nz);
       m[j] = s[j].allFinite() ? filters[j].filter(s[j] + n, t.dt) : s[j];
     }
     out.push_back(m);
@@ -141,8 +145,10 @@ TEST_CASE("on real motion with a markerless solve's noise, planted feet stay pla
     INFO(airborne_contacts << " contacts in " << airborne << " frames with both feet in the air");
     REQUIRE(in_contact > 100);
     CHECK(f1 >= min_f1);
-    // Sliding: the noisy ankle moves 5x the truth while planted; locked, within 1.3x.
-    CHECK(locked_speed <= 1.3 * truth_speed);
+    // Sliding: the noisy ankle moves 3 to 5 times the truth while planted; locked, 1.2 to 1.5 times over noise seeds
+    // 7..12 (so the bound has room: any realisation of the noise must pass).
+    CHECK(locked_speed <= 1.6 * truth_speed);
+    CHECK(locked_speed <= 0.5 * noisy_speed);
     // A planted ankle held still while the true one rolls from heel to toe costs a little position (a few mm); the
     // knee turns with the leg; nothing else moves.
     CHECK(ankle_err_locked / frames <= ankle_err_noisy / frames + 0.004);
