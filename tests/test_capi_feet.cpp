@@ -18,6 +18,7 @@ constexpr int kRAnkle = 11, kLAnkle = 14;  // BODY_25
 
 struct Run {
   std::vector<std::array<Eigen::Vector3d, OCTOCAP_JOINT_COUNT>> joints;
+  std::vector<std::array<Eigen::Vector3d, 2>> ankle_keypoints;  // BODY_25 RAnkle, LAnkle: what TRC and CSV carry
   std::vector<uint32_t> contacts;
 };
 
@@ -49,6 +50,14 @@ Run solve_take(const Calibration& cams, const octocap_calibration_t* calib, cons
       j[k] = joints[k].valid ? Eigen::Vector3d(joints[k].position[0], joints[k].position[1], joints[k].position[2])
                              : Eigen::Vector3d::Constant(std::nan(""));
     run.joints.push_back(j);
+    octocap_joint_t keypoints[25];
+    REQUIRE(octocap_frame_get_keypoints3d(frame, 0, keypoints, 25, &n) == OCTOCAP_OK);
+    std::array<Eigen::Vector3d, 2> ankles;
+    for (int side = 0; side < 2; ++side) {
+      const octocap_joint_t& k = keypoints[side == 0 ? kRAnkle : kLAnkle];
+      ankles[side] = k.valid ? Eigen::Vector3d(k.position[0], k.position[1], k.position[2]) : Eigen::Vector3d::Constant(std::nan(""));
+    }
+    run.ankle_keypoints.push_back(ankles);
     octocap_frame_release(frame);
   }
   return run;
@@ -71,6 +80,7 @@ TEST_CASE("a session reports planted feet, and with foot_lock holds them: less s
   for (const auto& f : motion.frames) floor = std::min({floor, f[kRAnkle].y(), f[kLAnkle].y()});
   int tp = 0, fp = 0, fn = 0, in_contact = 0;
   double truth_speed = 0, free_speed = 0, locked_speed = 0, free_err = 0, locked_err = 0, upper_change = 0;
+  double keypoint_gap = 0;
   for (size_t f = 1; f + 1 < motion.frames.size(); ++f) {
     CHECK(loose.contacts[f] == locked.contacts[f]);  // contacts come from the solve, locked or not
     for (int side = 0; side < 2; ++side) {
@@ -86,6 +96,9 @@ TEST_CASE("a session reports planted feet, and with foot_lock holds them: less s
         locked_speed += horizontal(locked.joints[f][joint] - locked.joints[f - 1][joint]) / dt;
         ++in_contact;
       }
+      // The locked ankle is what the keypoints say too (TRC and CSV are written from them).
+      if (locked.ankle_keypoints[f][side].allFinite())
+        keypoint_gap = std::max(keypoint_gap, (locked.ankle_keypoints[f][side] - locked.joints[f][joint]).norm());
       free_err += (loose.joints[f][joint] - motion.frames[f][a]).norm();
       locked_err += (locked.joints[f][joint] - motion.frames[f][a]).norm();
     }
@@ -105,6 +118,7 @@ TEST_CASE("a session reports planted feet, and with foot_lock holds them: less s
   // or toe, not the ankle), the price of not skating.
   CHECK(locked_err / (2 * motion.frames.size()) <= free_err / (2 * motion.frames.size()) + 0.004);
   CHECK(upper_change == 0);
+  CHECK(keypoint_gap < 1e-5);
 }
 
 TEST_CASE("foot_lock is 0 or 1, and a 1.0 caller's person struct is filled up to its size", "[capi]") {

@@ -406,10 +406,12 @@ void Session::finish_person(PersonResult& person, PersonState& state, double dt)
   person.keypoints_solved = solved;
   person.mean_reprojection_error_px = solved ? err / solved : 0;
 
+  std::array<const std::vector<int>*, kJointCount> sources{};  // the keypoints each joint was made of
   for (int j = 0; j < kJointCount; ++j) {
     const std::vector<int>* alternative = first_present_alternative(
         layout_->joint_sources[j], [&](int k) { return person.keypoints[k].valid; });
     if (!alternative) continue;
+    sources[j] = alternative;
     PointResult out;
     out.valid = true;
     out.confidence = 1e9;
@@ -443,14 +445,19 @@ void Session::finish_person(PersonResult& person, PersonState& state, double dt)
   cues.r_palm_across = rig_point(r_index_) - rig_point(r_pinky_);
   cues.l_palm_across = rig_point(l_index_) - rig_point(l_pinky_);
   // Feet: contacts always (engines run their own IK on them); with foot_lock, the planted ankles, their knees and
-  // feet go back into the joints and the bones.
+  // feet go back into the joints, the keypoints they were made of (what TRC and CSV carry) and the bones.
   SkeletonJoints locked = rig_joints;
   const FootContacts contacts = state.feet.apply(locked, dt);
   person.foot_contact = {contacts.right, contacts.left};
   if (config_.foot_lock) {
-    for (int j = 0; j < kJointCount; ++j)
-      if (person.joints[j].valid && locked[j] != rig_joints[j])
-        person.joints[j].position = z_up_ ? yup_to_zup(locked[j]) : locked[j];
+    std::vector<bool> moved(K, false);
+    for (int j = 0; j < kJointCount; ++j) {
+      if (!person.joints[j].valid || locked[j] == rig_joints[j]) continue;
+      const Eigen::Vector3d delta = z_up_ ? yup_to_zup(locked[j] - rig_joints[j]) : Eigen::Vector3d(locked[j] - rig_joints[j]);
+      person.joints[j].position += delta;
+      for (int k : *sources[j])
+        if (!moved[k]) person.keypoints[k].position += delta, moved[k] = true;
+    }
     rig_joints = locked;
   }
   person.bones = state.bone_solver.solve(rig_joints, cues);

@@ -21,9 +21,14 @@ double horizontal(const Eigen::Vector3d& v) { return std::hypot(v.x(), v.z()); }
 
 FootLock::FootLock(FootLockParams params) : p_(params) { reset(); }
 
+FootLock::Foot FootLock::idle_foot() const {
+  Foot f;
+  f.speed = p_.exit_speed_mps;  // not known to be still before it has moved
+  return f;
+}
+
 void FootLock::reset() {
-  for (Foot& f : feet_) f = Foot{};
-  for (Foot& f : feet_) f.speed = p_.exit_speed_mps;  // not known to be still before it has moved
+  for (Foot& f : feet_) f = idle_foot();
   floor_ = std::nan("");
   still_heights_.clear();
   next_still_ = 0;
@@ -49,22 +54,18 @@ FootContacts FootLock::apply(SkeletonJoints& joints, double dt) {
     const LegJoints& leg = kLegs[side];
     const Eigen::Vector3d ankle = joints[leg.ankle];
     if (!ankle.allFinite()) {
-      const double speed = p_.exit_speed_mps;
-      foot = Foot{};
-      foot.speed = speed;
+      foot = idle_foot();
       continue;
     }
     // Speed: the horizontal way from the oldest ankle within the window (or the nearest older one) to this one.
     for (int i = 0; i < foot.count; ++i) foot.age[i] += std::max(dt, 0.0);
-    int from = -1;  // the oldest within the window, else the youngest before it
+    int from = -1, youngest = -1;  // the oldest within the window, else the youngest before now
     for (int i = 0; i < foot.count; ++i) {
       if (!(foot.age[i] > 0)) continue;
-      const bool inside = foot.age[i] <= p_.speed_window_s;
-      const bool best_inside = from >= 0 && foot.age[from] <= p_.speed_window_s;
-      if (from < 0 || (inside && (!best_inside || foot.age[i] > foot.age[from])) ||
-          (!inside && !best_inside && foot.age[i] < foot.age[from]))
-        from = i;
+      if (foot.age[i] <= p_.speed_window_s && (from < 0 || foot.age[i] > foot.age[from])) from = i;
+      if (youngest < 0 || foot.age[i] < foot.age[youngest]) youngest = i;
     }
+    if (from < 0) from = youngest;
     if (from >= 0) foot.speed = horizontal(ankle - foot.recent[from]) / foot.age[from];
     foot.recent[foot.next] = ankle;
     foot.age[foot.next] = 0;
@@ -83,7 +84,7 @@ FootContacts FootLock::apply(SkeletonJoints& joints, double dt) {
     } else if (foot.speed > p_.exit_speed_mps || std::abs(height) > p_.exit_height_m ||
                (ankle - foot.anchor).norm() > p_.max_drift_m) {
       foot.contact = false;
-      foot.release = foot.weight * (foot.anchor - ankle);
+      foot.release = foot.anchor - ankle;
     } else if (dt > 0) {
       // The lock follows the measured ankle slowly: a planted foot still rolls from heel to toe (its ankle moves a
       // few centimetres a step), which a hard lock would fight and a slow one keeps, without the solve's jitter.
@@ -96,10 +97,7 @@ FootContacts FootLock::apply(SkeletonJoints& joints, double dt) {
 
     // Locked, the ankle goes onto the anchor (blending in); let go, the offset it had is carried along and fades, so
     // a foot that leaves fast is never held back toward where it stood.
-    const double fade = foot.contact || foot.weight <= 0 ? 0.0 : foot.weight / std::min(1.0, foot.weight + step);
-    Eigen::Vector3d target = foot.contact ? Eigen::Vector3d(ankle + foot.weight * (foot.anchor - ankle))
-                                          : Eigen::Vector3d(ankle + fade * foot.release);
-    if (!foot.contact) foot.release *= fade;
+    Eigen::Vector3d target = ankle + foot.weight * (foot.contact ? Eigen::Vector3d(foot.anchor - ankle) : foot.release);
     // A planted foot never goes through the floor (a free one may: the floor is learnt, and a step or a box is not it).
     if (foot.weight > 0 && std::isfinite(floor_)) target.y() = std::max(target.y(), floor_);
     if (side == 0) contacts.right = foot.contact, contacts.right_weight = static_cast<float>(foot.weight);

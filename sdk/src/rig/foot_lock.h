@@ -3,7 +3,7 @@
 // is, the ankle is held on a lock that follows it slowly (a foot rolls from heel to toe) and the leg turns about the
 // hip to reach it (the thigh keeps its length, the knee its bend; the lock is never more than max_drift from the
 // measured ankle, so the shin changes by less), blended in and out over a few frames. Markerless ankles wander while
-// a foot is planted (two to three times the motion that is really there, issue 29): locking is what makes an avatar
+// a foot is planted (three to five times the motion that is really there, tests/test_foot_lock.cpp): locking is what makes an avatar
 // stand instead of skate, and engines read the contacts for their own IK.
 #pragma once
 #include <array>
@@ -52,13 +52,14 @@ class FootLock {
     bool contact = false;
     double weight = 0;  // blend, 0 (free) to 1 (locked)
     Eigen::Vector3d anchor = Eigen::Vector3d::Zero();
-    Eigen::Vector3d release = Eigen::Vector3d::Zero();  // the lock's offset from the ankle as it was let go, fading
+    Eigen::Vector3d release = Eigen::Vector3d::Zero();  // the lock's offset from the ankle as it was let go
     int samples = 0;  // measurements averaged into the anchor since the contact began
     std::array<Eigen::Vector3d, 16> recent;  // the last ankles, a ring (speed over the window)
     std::array<double, 16> age{};             // seconds before now of each
     int count = 0, next = 0;
     double speed = 0;
   };
+  Foot idle_foot() const;
   void update_floor(double ankle_height);
   FootLockParams p_;
   std::array<Foot, 2> feet_;
