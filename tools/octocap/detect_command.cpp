@@ -12,7 +12,6 @@
 
 #include "debug_draw.h"
 #include "octocap/octocap.hpp"
-#include "image_source.h"
 
 namespace fs = std::filesystem;
 
@@ -41,20 +40,19 @@ void write_openpose(const fs::path& path, const std::vector<std::vector<octocap_
 int detect(const DetectOptions& o) {
   if (o.images.empty() || o.output.empty())
     throw std::runtime_error("--images and --output are required (or --live, a capture node)");
-  ImageSource source(o.images);
+  octocap::TakeReader source(o.images);
   const octocap_detector_config_t cfg = o.detector.config();
   octocap::Detector detector(cfg);
   const size_t frames = o.max_frames ? std::min<size_t>(o.max_frames, source.frame_count()) : source.frame_count();
-  const auto& names = source.camera_names();
+  std::vector<std::string> names;
+  for (uint32_t c = 0; c < source.camera_count(); ++c) names.push_back(source.camera_name(c));
   for (const auto& n : names) fs::create_directories(fs::path(o.output) / (n + "_json"));
   if (!o.debug_images.empty()) fs::create_directories(o.debug_images);
   octocap_detect_info_t info{};
   double total_ms = 0, inference_ms = 0;
   size_t found = 0;
   for (size_t f = 0; f < frames; ++f) {
-    std::vector<cv::Mat> images = source.read(f);
-    std::vector<octocap_image_t> views;
-    for (const cv::Mat& m : images) views.push_back(as_image(m));
+    const std::vector<octocap_image_t>& views = source.read(static_cast<uint32_t>(f));
     detector.run(views.data(), static_cast<uint32_t>(views.size()));
     info = detector.info();
     total_ms += info.total_ms;
@@ -72,8 +70,9 @@ int detect(const DetectOptions& o) {
       std::snprintf(file, sizeof file, "%s_%012zu_keypoints.json", names[v].c_str(), f);
       write_openpose(fs::path(o.output) / (names[v] + "_json") / file, people);
       if (!o.debug_images.empty()) {
-        draw_detections(images[v], flat, info.keypoint_count, info.layout, 0.3f);
-        cv::imwrite(debug_image_path(o.debug_images, names[v], f), images[v]);
+        cv::Mat picture = drawable_copy(views[v]);
+        draw_detections(picture, flat, info.keypoint_count, info.layout, 0.3f);
+        cv::imwrite(debug_image_path(o.debug_images, names[v], f), picture);
       }
     }
     if (!o.quiet && frames >= 20 && (f + 1) % std::max<size_t>(1, frames / 10) == 0)
@@ -124,14 +123,10 @@ std::string runtime_description(const octocap_detect_info_t& info) {
   return s;
 }
 
-octocap_image_t as_image(const cv::Mat& bgr) {
-  octocap_image_t im{};
-  im.pixels = bgr.data;
-  im.width = static_cast<uint32_t>(bgr.cols);
-  im.height = static_cast<uint32_t>(bgr.rows);
-  im.stride_bytes = static_cast<uint32_t>(bgr.step[0]);
-  im.format = OCTOCAP_PIXELS_BGR8;
-  return im;
+cv::Mat drawable_copy(const octocap_image_t& bgr) {
+  const cv::Mat borrowed(static_cast<int>(bgr.height), static_cast<int>(bgr.width), CV_8UC3,
+                         const_cast<uint8_t*>(bgr.pixels), bgr.stride_bytes);
+  return borrowed.clone();
 }
 
 std::string debug_image_path(const std::string& dir, const std::string& camera, size_t frame) {

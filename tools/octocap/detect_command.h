@@ -44,7 +44,7 @@ struct DetectOptions {
 int run_detect(const DetectOptions& options);
 int run_node(const DetectOptions& options);  // --live (node_command.cpp)
 
-// A BGR OpenCV image as the C ABI's image (borrowed).
-octocap_image_t as_image(const cv::Mat& bgr);
+// A take reader's borrowed BGR picture, copied so that it can be drawn on.
+cv::Mat drawable_copy(const octocap_image_t& bgr);
 // frame_000012.png style names shared by the debug outputs.
 std::string debug_image_path(const std::string& dir, const std::string& camera, size_t frame);

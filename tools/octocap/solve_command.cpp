@@ -19,7 +19,6 @@
 #include "debug_draw.h"
 #include "ground_truth.h"
 #include "take_writers.h"
-#include "image_source.h"
 #include "octocap/octocap.hpp"
 
 namespace {
@@ -40,13 +39,14 @@ struct Accuracy {
 
 // Each view with what the detector found and where the solved 3D keypoints reproject.
 void write_debug_images(const octocap::Session& session, const octocap_calibration_t* calib,
-                        std::vector<cv::Mat>& images, octocap_layout_t layout, uint32_t K, const octocap::Frame& frame_3d,
+                        const std::vector<octocap_image_t>& images, octocap_layout_t layout, uint32_t K, const octocap::Frame& frame_3d,
                         const std::string& dir, uint32_t frame) {
   const bool solved = frame_3d.person_count() > 0;
   std::vector<octocap_joint_t> joints;
   if (solved) joints = frame_3d.keypoints3d(0);
   for (uint32_t v = 0; v < images.size(); ++v) {
-    draw_detections(images[v], session.detections(v), K, layout, 0.3f);
+    cv::Mat picture = drawable_copy(images[v]);
+    draw_detections(picture, session.detections(v), K, layout, 0.3f);
     std::vector<cv::Point2d> reprojected;
     for (uint32_t k = 0; solved && k < K; ++k) {
       if (!joints[k].valid) continue;
@@ -54,10 +54,10 @@ void write_debug_images(const octocap::Session& session, const octocap_calibrati
       double px[2];
       if (octocap_calibration_project(calib, v, world, px) == OCTOCAP_OK) reprojected.emplace_back(px[0], px[1]);
     }
-    draw_reprojection(images[v], reprojected);
+    draw_reprojection(picture, reprojected);
     octocap_camera_t cam;
     check(octocap_calibration_get_camera(calib, v, &cam), "camera");
-    cv::imwrite(debug_image_path(dir, cam.name, frame), images[v]);
+    cv::imwrite(debug_image_path(dir, cam.name, frame), picture);
   }
 }
 
@@ -70,13 +70,13 @@ int solve(const SolveOptions& o) {
   octocap_layout_t layout = OCTOCAP_LAYOUT_AUTO;
   if (o.layout != "auto") check(octocap_layout_from_name(o.layout.c_str(), &layout), "--layout");
   std::optional<octocap::Recording> rec;
-  std::unique_ptr<ImageSource> source;
+  std::unique_ptr<octocap::TakeReader> source;
   uint32_t views = 0, frames = 0;
   if (!o.images.empty()) {
     if (!o.sync.empty()) throw std::runtime_error("--sync applies to --keypoints (run octocap detect first)");
-    source = std::make_unique<ImageSource>(o.images);
-    views = static_cast<uint32_t>(source->camera_count());
-    frames = static_cast<uint32_t>(source->frame_count());
+    source = std::make_unique<octocap::TakeReader>(o.images);
+    views = source->camera_count();
+    frames = source->frame_count();
     if (layout == OCTOCAP_LAYOUT_AUTO)  // the model's, from its card (the network is loaded once, by the session)
       octocap::check(octocap_model_layout(o.detector.config().model, &layout), "--model");
   } else {
@@ -172,14 +172,12 @@ int solve(const SolveOptions& o) {
     }
     const int64_t t_us = static_cast<int64_t>(std::llround(f * 1e6 / rate_hz));
     octocap_result_t r = OCTOCAP_OK;  // or OCTOCAP_STATUS_NO_PERSON
-    std::vector<cv::Mat> images;
+    const std::vector<octocap_image_t>* images = nullptr;
     if (source) {
       const auto read_start = std::chrono::steady_clock::now();
-      images = source->read(f);
+      images = &source->read(f);
       read_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - read_start).count();
-      std::vector<octocap_image_t> views_c;
-      for (const cv::Mat& m : images) views_c.push_back(as_image(m));
-      r = session.solve_images(views_c.data(), views, t_us);
+      r = session.solve_images(images->data(), views, t_us);
       const octocap_detect_info_t dinfo = session.detect_info();
       detect_ms += dinfo.total_ms;
       inference_ms += dinfo.inference_ms;
@@ -199,7 +197,7 @@ int solve(const SolveOptions& o) {
     }
     const octocap::Frame frame = session.frame();
     if (!o.debug_images.empty() && source)
-      write_debug_images(session, calib.get(), images, layout, K, frame, o.debug_images, f);
+      write_debug_images(session, calib.get(), *images, layout, K, frame, o.debug_images, f);
     solve_ms += frame.summary().solve_ms;
     const uint32_t present = frame.person_count();
     writers.add(frame);

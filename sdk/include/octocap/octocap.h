@@ -120,7 +120,7 @@ extern "C" {
  *  @since 1.0 */
 #define OCTOCAP_VERSION_MAJOR 1
 /** Minor version of this header: grows with each release that adds to the API. @since 1.0 */
-#define OCTOCAP_VERSION_MINOR 11
+#define OCTOCAP_VERSION_MINOR 12
 /** Patch version of this header: a release of fixes that leaves the API as it was. @since 1.0 */
 #define OCTOCAP_VERSION_PATCH 0
 /** MAJOR * 10000 + MINOR * 100 + PATCH: 10000 for 1.0.0. @since 1.0 */
@@ -999,6 +999,108 @@ OCTOCAP_API const char* octocap_onnxruntime_version(void);
  * @since 1.9
  */
 OCTOCAP_API const char* octocap_openvino_version(void);
+
+/** @} */
+/* ------------------------------------------------------------------------------------------------------ */
+/** @name Recorded takes: the cameras' pictures, frame by frame
+ *
+ * A take on disk is a folder holding one video per camera (.mp4, .avi, .mov, .mkv, .webm), or one sub-folder of
+ * pictures per camera (.png, .jpg, .jpeg, .bmp, .tif, .tiff), sorted by name: the order the calibration lists its
+ * cameras in. A take reader decodes it with the same code that plays files as cameras in a live capture, and hands
+ * out each frame's pictures ready for octocap_session_solve_images() or octocap_detector_run():
+ *
+ *     octocap_take_reader_t* take;  octocap_take_reader_open("take/videos", &take);
+ *     octocap_take_info_t info = {sizeof info};  octocap_take_reader_info(take, &info);
+ *     octocap_image_t images[8];  uint32_t n;
+ *     for (uint32_t f = 0; f < info.frame_count; ++f) {
+ *       octocap_take_reader_read(take, f, images, 8, &n);
+ *       octocap_session_solve_images(session, images, n, (int64_t)(f * 1e6 / 30));
+ *     }
+ *     octocap_take_reader_destroy(take);
+ *
+ * Thread rules: one reader is used by one thread at a time; distinct readers run in parallel. A reader decodes
+ * the next frame on a thread of its own while the caller works on the one it was handed.
+ */
+/** @{ */
+
+/** Opaque reader of a recorded take's pictures. @since 1.12 */
+typedef struct octocap_take_reader_t octocap_take_reader_t;
+
+/** What a take holds. @since 1.12 */
+typedef struct octocap_take_info_t {
+  uint32_t struct_size;      /**< Set by the caller to sizeof(octocap_take_info_t). */
+  uint32_t camera_count;     /**< Cameras: videos or picture sub-folders. */
+  uint32_t frame_count;      /**< Frames every camera has (the shortest camera's count). */
+  uint32_t reserved;         /**< Zero. */
+  double frames_per_second;  /**< The videos' rate (the first camera's: the log warns when another differs); 0 for
+                                  picture folders, whose rate the caller knows. */
+} octocap_take_info_t;
+
+/**
+ * Opens the take in `folder`.
+ * @param[in]  folder A folder of videos, one per camera, or of sub-folders of pictures, one per camera.
+ * @param[out] out    The new reader (NULL on failure); destroy it with octocap_take_reader_destroy().
+ * @retval OCTOCAP_OK                     Opened; every camera's file or folder could be read.
+ * @retval OCTOCAP_ERROR_INVALID_ARGUMENT `folder` or `out` is NULL.
+ * @retval OCTOCAP_ERROR_IO               `folder` is not a folder, holds neither layout, or a video cannot be opened;
+ *                                        the message names it.
+ * @since 1.12
+ */
+OCTOCAP_API octocap_result_t octocap_take_reader_open(const char* folder, octocap_take_reader_t** out);
+
+/**
+ * Fills `out` with what the take holds.
+ * @param[in]  reader A take reader.
+ * @param[out] out    Its `struct_size` set by the caller.
+ * @retval OCTOCAP_OK                     Filled.
+ * @retval OCTOCAP_ERROR_INVALID_HANDLE   `reader` is not a live take reader.
+ * @retval OCTOCAP_ERROR_INVALID_ARGUMENT `out` is NULL.
+ * @retval OCTOCAP_ERROR_STRUCT_SIZE      `out->struct_size` is not sizeof(octocap_take_info_t).
+ * @since 1.12
+ */
+OCTOCAP_API octocap_result_t octocap_take_reader_info(const octocap_take_reader_t* reader, octocap_take_info_t* out);
+
+/**
+ * The name of camera `camera`: its video's file name without the extension, or its sub-folder's name (as a
+ * detection's OpenPose folders and the calibration's `name` call it).
+ * @param[in]  reader A take reader.
+ * @param[in]  camera 0 .. camera_count - 1.
+ * @param[out] name   A UTF-8 string owned by the reader, valid until octocap_take_reader_destroy().
+ * @retval OCTOCAP_OK                     `*name` set.
+ * @retval OCTOCAP_ERROR_INVALID_HANDLE   `reader` is not a live take reader.
+ * @retval OCTOCAP_ERROR_INVALID_ARGUMENT `name` is NULL or `camera` is out of range.
+ * @since 1.12
+ */
+OCTOCAP_API octocap_result_t octocap_take_reader_camera_name(const octocap_take_reader_t* reader, uint32_t camera,
+                                                             const char** name);
+
+/**
+ * Reads frame `frame` of every camera. Frames read in order cost one decode each (the next one decodes while the
+ * caller works); going back, or jumping ahead in a video, costs a seek or the frames between.
+ * @param[in]  reader   A take reader.
+ * @param[in]  frame    0 .. frame_count - 1.
+ * @param[out] images   `capacity` images; camera c's picture goes to `images[c]`, ::OCTOCAP_PIXELS_BGR8. The
+ *                      pixels belong to the reader and stay valid until its next octocap_take_reader_read() or
+ *                      octocap_take_reader_destroy(): read them, do not write them.
+ * @param[in]  capacity Images `images` holds (at least camera_count).
+ * @param[out] count    Set to camera_count; may be NULL.
+ * @retval OCTOCAP_OK                      Every camera's picture is in `images`.
+ * @retval OCTOCAP_ERROR_INVALID_HANDLE    `reader` is not a live take reader.
+ * @retval OCTOCAP_ERROR_INVALID_ARGUMENT  `images` is NULL or `frame` is past the take's end.
+ * @retval OCTOCAP_ERROR_BUFFER_TOO_SMALL  `capacity` is below camera_count (`*count` tells it).
+ * @retval OCTOCAP_ERROR_IO                A camera's picture cannot be read or decoded; the message names the camera
+ *                                         and the frame. The reader stays usable for other frames.
+ * @since 1.12
+ */
+OCTOCAP_API octocap_result_t octocap_take_reader_read(octocap_take_reader_t* reader, uint32_t frame,
+                                                      octocap_image_t* images, uint32_t capacity, uint32_t* count);
+
+/**
+ * Destroys a take reader; its pictures are gone. NULL is accepted.
+ * @param[in] reader A take reader, or NULL.
+ * @since 1.12
+ */
+OCTOCAP_API void octocap_take_reader_destroy(octocap_take_reader_t* reader);
 
 /** @} */
 /* ------------------------------------------------------------------------------------------------------ */

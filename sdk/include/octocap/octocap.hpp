@@ -412,6 +412,39 @@ class Detector {
   detail::Owned<octocap_detector_t, octocap_detector_destroy> d_;
 };
 
+// A recorded take's pictures (a folder of videos, or of picture folders, one per camera), frame by frame.
+class TakeReader {
+ public:
+  explicit TakeReader(const std::string& folder) {
+    octocap_take_reader_t* r = nullptr;
+    check(octocap_take_reader_open(folder.c_str(), &r), "opening the take");
+    r_.reset(r);
+    info_.struct_size = sizeof info_;
+    check(octocap_take_reader_info(r_.get(), &info_), "take info");
+  }
+  uint32_t camera_count() const { return info_.camera_count; }
+  uint32_t frame_count() const { return info_.frame_count; }
+  double fps() const { return info_.frames_per_second; }
+  std::string camera_name(uint32_t camera) const {
+    const char* name = nullptr;
+    check(octocap_take_reader_camera_name(r_.get(), camera, &name), "camera name");
+    return name;
+  }
+  // Every camera's picture of `frame`, borrowed from the reader until the next read().
+  const std::vector<octocap_image_t>& read(uint32_t frame) {
+    images_.resize(info_.camera_count);
+    uint32_t n = 0;
+    check(octocap_take_reader_read(r_.get(), frame, images_.data(), static_cast<uint32_t>(images_.size()), &n),
+          "reading the take");
+    return images_;
+  }
+
+ private:
+  detail::Owned<octocap_take_reader_t, octocap_take_reader_destroy> r_;
+  octocap_take_info_t info_{};
+  std::vector<octocap_image_t> images_;
+};
+
 }  // namespace octocap
 
 #endif  // OCTOCAP_OCTOCAP_HPP

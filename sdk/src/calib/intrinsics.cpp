@@ -70,7 +70,7 @@ Camera calibrate_intrinsics(const std::string& directory, const BoardSpec& board
                             const std::string& overlay_png) {
   std::error_code ec;
   if (!fs::is_directory(directory, ec)) throw Error(Errc::io, directory + ": not a directory");
-  const std::vector<std::string> files = sorted_files(directory, {".png", ".jpg", ".jpeg", ".bmp", ".tif"});
+  const std::vector<std::string> files = sorted_files(directory, picture_extensions());
   if (files.empty()) throw Error(Errc::io, directory + ": no image files (png, jpg, bmp, tif)");
 
   std::vector<cv::Point3f> board_points;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "capi/boundary.h"
+#include "capture/take_reader.h"
 #include "core/camera.h"
 #include "core/frame.h"
 #include "detect/detector.h"
@@ -55,6 +56,10 @@ struct octocap_motion_t {
 
 struct octocap_live_t {
   std::unique_ptr<octocap::internal::LiveEngine> engine;
+};
+
+struct octocap_take_reader_t {
+  std::unique_ptr<octocap::internal::TakeReader> reader;
 };
 
 struct octocap_node_t {

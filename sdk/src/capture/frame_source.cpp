@@ -55,6 +55,16 @@ class VideoSource : public FrameSource {
     return fps > 0 && fps < 1000 ? fps : 0;
   }
 
+  int64_t frame_count() const override {
+    if (spec_.kind != SourceKind::video_file) return -1;
+    const double n = cap_.get(cv::CAP_PROP_FRAME_COUNT);
+    return n > 0 && n < 1e12 ? static_cast<int64_t>(n) : -1;
+  }
+
+  bool seek(int64_t frame) override {
+    return spec_.kind == SourceKind::video_file && cap_.set(cv::CAP_PROP_POS_FRAMES, static_cast<double>(frame));
+  }
+
  private:
   CameraSpec spec_;
   SourceOptions options_;
@@ -67,7 +77,7 @@ class PictureFolderSource : public FrameSource {
   PictureFolderSource(CameraSpec spec, SourceOptions options) : spec_(std::move(spec)), options_(options) {}
 
   void open() override {
-    files_ = sorted_files(spec_.location, {".png", ".jpg", ".jpeg", ".bmp"});
+    files_ = sorted_files(spec_.location, picture_extensions());
     if (files_.empty()) throw Error(Errc::io, "camera '" + spec_.text + "': the folder holds no pictures");
     next_ = 0;
   }
@@ -90,6 +100,12 @@ class PictureFolderSource : public FrameSource {
 
   double nominal_fps() const override { return options_.picture_rate_hz; }
   uint64_t bad_pictures() const override { return bad_; }
+  int64_t frame_count() const override { return static_cast<int64_t>(files_.size()); }
+  bool seek(int64_t frame) override {
+    if (frame < 0 || static_cast<size_t>(frame) > files_.size()) return false;
+    next_ = static_cast<size_t>(frame);
+    return true;
+  }
 
  private:
   CameraSpec spec_;

@@ -31,6 +31,10 @@ class FrameSource {
   // From another thread: a blocked open() or read() gives up soon (read() returns false). Sources that cannot be
   // interrupted (FFmpeg's) end at their own timeouts.
   virtual void interrupt() {}
+  // Files and folders only: the frames the source holds (-1: a live stream, or a file that does not say), and a
+  // jump so that the next read() gives frame `frame` (false where the source cannot jump).
+  virtual int64_t frame_count() const { return -1; }
+  virtual bool seek(int64_t /*frame*/) { return false; }
 };
 
 std::unique_ptr<FrameSource> make_frame_source(const CameraSpec& spec, const SourceOptions& options);

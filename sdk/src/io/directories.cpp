@@ -30,4 +30,14 @@ std::vector<std::string> sorted_files(const std::string& directory, const std::v
   return files;
 }
 
+const std::vector<std::string>& picture_extensions() {
+  static const std::vector<std::string> extensions = {".png", ".jpg", ".jpeg", ".bmp", ".tif", ".tiff"};
+  return extensions;
+}
+
+const std::vector<std::string>& video_extensions() {
+  static const std::vector<std::string> extensions = {".mp4", ".avi", ".mov", ".mkv", ".webm"};
+  return extensions;
+}
+
 }  // namespace octocap::internal

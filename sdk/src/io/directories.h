@@ -14,4 +14,9 @@ std::vector<std::filesystem::path> sorted_subdirectories(const std::string& dire
 // sorted by name (the order pictures are taken in); empty when there are none or `directory` is not a folder.
 std::vector<std::string> sorted_files(const std::string& directory, const std::vector<std::string>& extensions);
 
+// What a folder of pictures (a camera's, a board's) counts as pictures, and a take's folder as videos: extensions in
+// lower case, with the dot.
+const std::vector<std::string>& picture_extensions();
+const std::vector<std::string>& video_extensions();
+
 }  // namespace octocap::internal
