@@ -1,5 +1,6 @@
 // Recorded takes through the C ABI: capture/take_reader.h's pictures handed out as borrowed images.
-#include <cstring>
+#include <algorithm>
+#include <cstdint>
 
 #include "capi/boundary.h"
 #include "capi/handles.h"

@@ -11,31 +11,19 @@
 namespace fs = std::filesystem;
 
 namespace octocap::internal {
-namespace {
-
-CameraSpec file_spec(const std::string& path, SourceKind kind) {
-  CameraSpec spec;
-  spec.text = path;
-  spec.kind = kind;
-  spec.location = path;
-  return spec;
-}
-
-}  // namespace
 
 TakeReader::TakeReader(const std::string& folder) {
   std::error_code ec;
   if (!fs::is_directory(folder, ec)) throw Error(Errc::io, folder + " is not a folder");
-  SourceOptions options;
-  options.picture_rate_hz = 30;  // a folder's pictures have no rate; the index is the clock here, not the rate
+  const SourceOptions options;  // a folder's pictures play at its default rate: the index is the take's clock
   const std::vector<std::string> videos = sorted_files(folder, video_extensions());
   std::vector<std::pair<std::string, CameraSpec>> specs;
   if (!videos.empty()) {
-    for (const std::string& v : videos) specs.emplace_back(fs::path(v).stem().string(), file_spec(v, SourceKind::video_file));
+    for (const std::string& v : videos) specs.emplace_back(fs::path(v).stem().string(), parse_camera_spec(v));
   } else {
     for (const fs::path& d : sorted_subdirectories(folder))
       if (!sorted_files(d.string(), picture_extensions()).empty())
-        specs.emplace_back(d.filename().string(), file_spec(d.string(), SourceKind::picture_folder));
+        specs.emplace_back(d.filename().string(), parse_camera_spec(d.string()));
   }
   if (specs.empty())
     throw Error(Errc::io, folder + " holds neither videos (one per camera) nor sub-folders of pictures");
