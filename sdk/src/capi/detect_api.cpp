@@ -21,7 +21,8 @@ DetectorConfig detector_config(const octocap_detector_config_t& given) {
   const octocap_detector_config_t c = widen(given, defaults);
   DetectorConfig d;
   d.model = c_text(c.model, sizeof c.model, "detector model path");
-  // Enums and counts cast as given (every core enum is int-based, so any value is defined); validate() judges them.
+  // Enums and counts cast as given (every core enum is int-based, so any value is defined): the mapping judges
+  // nothing, DetectorConfig::validate() does, where a config is used (the Detector, a session, a capture node).
   d.mode = static_cast<DetectMode>(c.mode);
   d.pick = static_cast<PersonPick>(c.person_pick);
   d.threads = static_cast<int>(std::min<uint32_t>(c.threads, 1u << 20));
@@ -33,7 +34,6 @@ DetectorConfig detector_config(const octocap_detector_config_t& given) {
   d.device = static_cast<Device>(c.device);
   d.runtime = static_cast<Runtime>(c.runtime);
   d.precision = static_cast<Precision>(c.precision);
-  d.validate();
   return d;
 }
 

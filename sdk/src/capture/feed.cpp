@@ -1,10 +1,22 @@
 #include "capture/feed.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "core/clock.h"
+#include "core/error.h"
 
 namespace octocap::internal {
+
+void FeedOptions::validate() const {
+  if (!(source.picture_rate_hz >= 0.01 && source.picture_rate_hz <= 1000))  // NaN fails too
+    throw Error(Errc::invalid_argument, "picture_rate_hz must be 0.01 to 1000");
+  if (source.open_timeout_ms < 1 || source.open_timeout_ms > 600000 || source.read_timeout_ms < 1 ||
+      source.read_timeout_ms > 600000)
+    throw Error(Errc::invalid_argument, "open_timeout_ms and read_timeout_ms must be 1 ms to 10 minutes");
+  if (reconnect_min_ms < 1 || reconnect_max_ms < std::max(100, reconnect_min_ms) || reconnect_max_ms > 600000)
+    throw Error(Errc::invalid_argument, "reconnect_max_ms must be 100 ms to 10 minutes");
+}
 
 Candidate Feed::candidate(uint64_t after) const {
   const std::lock_guard<std::mutex> lock(mutex_);

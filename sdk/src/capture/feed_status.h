@@ -33,6 +33,9 @@ struct FeedOptions {
   int reconnect_min_ms = 100;   // first back-off; doubles up to the max
   int reconnect_max_ms = 2000;
   bool pace_files = true;       // play files and folders at their own rate, as a camera would deliver them
+  // Throws Error(invalid_argument) naming the first value out of range: timeouts 1 ms to 10 minutes, the back-off
+  // 100 ms (from reconnect_min_ms) to 10 minutes, a folder's rate 0.01 to 1000 pictures a second.
+  void validate() const;
 };
 
 }  // namespace octocap::internal

@@ -45,6 +45,7 @@ KeypointNode::KeypointNode(const NodeConfig& config, const std::vector<std::stri
                            std::vector<std::string> names)
     : config_(config) {
   if (cameras.empty()) throw Error(Errc::invalid_argument, "a capture node needs at least one camera");
+  config_.feeds.validate();
   if (!names.empty() && names.size() != cameras.size())
     throw Error(Errc::invalid_argument, std::to_string(names.size()) + " camera names for " +
                                             std::to_string(cameras.size()) + " cameras");
@@ -93,6 +94,7 @@ NodeStats KeypointNode::stats() const {
 
 void KeypointNode::set_detector(const DetectorConfig& config) {
   if (running_) throw Error(Errc::invalid_argument, "the capture node is running: set the detector before start");
+  config.validate();  // kept for start(): refused now, where the caller set it
   config_.detector = config;
   for (auto& c : cameras_) c->detector.reset();
 }

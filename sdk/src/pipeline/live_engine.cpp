@@ -26,8 +26,17 @@ void accumulate(double& mean, double value, uint64_t n) { mean += (value - mean)
 
 }  // namespace
 
+void LiveConfig::validate() const {
+  feeds.validate();
+  if (!(target_fps >= 0 && target_fps <= 1000))  // NaN fails too
+    throw Error(Errc::invalid_argument, "target_fps must be 0 (the cameras' rate) to 1000");
+  if (!(latency_budget_ms >= 10 && latency_budget_ms <= 10000))
+    throw Error(Errc::invalid_argument, "latency_budget_ms must be 10 to 10000");
+}
+
 LiveEngine::LiveEngine(const LiveConfig& config, Calibration calib, const std::vector<std::string>& cameras)
     : config_(config), calib_(std::move(calib)) {
+  config_.validate();
   if (cameras.size() != calib_.size())
     throw Error(Errc::camera_mismatch, std::to_string(cameras.size()) + " cameras given, the calibration has " +
                                            std::to_string(calib_.size()) + " (give them in calibration order)");

@@ -39,6 +39,9 @@ struct LiveConfig {
   bool governed = true;
   double target_fps = 0;           // sets a second it holds; 0: the slowest camera's rate
   double latency_budget_ms = 100;  // grab to frame, 99th percentile
+  // Throws Error(invalid_argument) for a value out of range (the feeds', target_fps 0..1000, latency_budget_ms
+  // 10..10000); the session's config is its own (SessionConfig::validate, with the cameras).
+  void validate() const;
 };
 
 // Means over the frames solved so far, and the latency distribution of the last ones.

@@ -40,36 +40,35 @@ Keypoint2D clean(const Keypoint2D& k) {
 }  // namespace
 
 void SessionConfig::validate(int cameras) const {
-  const SessionConfig& c = *this;
   if (layout == LayoutId::automatic || std::find(all_layouts().begin(), all_layouts().end(), layout) == all_layouts().end())
     throw Error(Errc::invalid_argument, "config.layout must be a concrete layout (not AUTO)");
   if (method != Method::subdivision && method != Method::triangulation && method != Method::automatic)
     throw Error(Errc::invalid_argument, "config.method is not a known method");
   if (up != UpAxis::y && up != UpAxis::z && up != UpAxis::automatic)
     throw Error(Errc::invalid_argument, "config.up_axis must be Y, Z or AUTO");
-  const double values[] = {c.delta, c.pixel_tolerance, c.min_confidence, c.outlier_threshold_px, c.filter_min_cutoff,
-                           c.filter_beta};
+  const double values[] = {delta, pixel_tolerance, min_confidence, outlier_threshold_px, filter_min_cutoff,
+                           filter_beta};
   for (double v : values)
     if (!std::isfinite(v)) throw Error(Errc::invalid_argument, "a config value is NaN or infinite");
-  if (!c.volume_min.allFinite() || !c.volume_max.allFinite())
+  if (!volume_min.allFinite() || !volume_max.allFinite())
     throw Error(Errc::invalid_argument, "config.volume_min/volume_max must be finite");
   // Subdivision visits about max_candidates * 8 cubes per level and log2(volume / delta) levels: a 1 mm floor and a
   // cap of 4096 candidates keep a frame in milliseconds whatever the volume.
-  if (!(c.delta >= 0.001)) throw Error(Errc::invalid_argument, "config.delta_m must be >= 0.001 (1 mm)");
-  if (c.pixel_tolerance < 0) throw Error(Errc::invalid_argument, "config.pixel_tolerance must be >= 0");
-  if (c.max_candidates < 1 || c.max_candidates > 4096)
+  if (!(delta >= 0.001)) throw Error(Errc::invalid_argument, "config.delta_m must be >= 0.001 (1 mm)");
+  if (pixel_tolerance < 0) throw Error(Errc::invalid_argument, "config.pixel_tolerance must be >= 0");
+  if (max_candidates < 1 || max_candidates > 4096)
     throw Error(Errc::invalid_argument, "config.max_candidates must be 1..4096");
-  if (!(c.outlier_threshold_px > 0)) throw Error(Errc::invalid_argument, "config.outlier_threshold_px must be > 0");
-  if (!(c.filter_min_cutoff > 0) || c.filter_beta < 0)
+  if (!(outlier_threshold_px > 0)) throw Error(Errc::invalid_argument, "config.outlier_threshold_px must be > 0");
+  if (!(filter_min_cutoff > 0) || filter_beta < 0)
     throw Error(Errc::invalid_argument, "config.filter_min_cutoff_hz must be > 0 and filter_beta >= 0");
   // Frame numbers count up from here; leaving room below INT64_MAX keeps every increment defined.
-  if (c.first_frame_index < 0 || c.first_frame_index > (int64_t{1} << 62))
+  if (first_frame_index < 0 || first_frame_index > (int64_t{1} << 62))
     throw Error(Errc::invalid_argument, "config.first_frame_index must be 0 .. 2^62");
-  if (c.volume_min != c.volume_max && (c.volume_max.array() <= c.volume_min.array()).any())
+  if (volume_min != volume_max && (volume_max.array() <= volume_min.array()).any())
     throw Error(Errc::invalid_argument, "config.volume_max must exceed volume_min on every axis");
-  if (c.max_people > kMaxPeople)
+  if (max_people > kMaxPeople)
     throw Error(Errc::invalid_argument, "config.max_people must be 0 (all) .. " + std::to_string(kMaxPeople) + ", is " +
-                                            std::to_string(c.max_people));
+                                            std::to_string(max_people));
   if (min_views < 2 || min_views > cameras)
     throw Error(Errc::invalid_argument, "min_views must be between 2 and the camera count (" +
                                             std::to_string(cameras) + "), is " + std::to_string(min_views));

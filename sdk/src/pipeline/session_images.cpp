@@ -62,7 +62,9 @@ void Session::set_detector(const DetectorConfig& given) {
     // model named, the multi-person model on whole views: on Pose2Sim's two-person take it kept both people in every
     // frame at 71 ms a frame, where crops of each kept them in 98 of 100 at 177 ms (README, "Several people").
     config.find_new_people = true;
-    config.max_people = std::max<size_t>(config.max_people, config_.max_people == 0 ? kMaxPeople : config_.max_people);
+    // A count of 0 stays 0: raised, the Detector (where the config is checked) would not see the caller's mistake.
+    if (config.max_people > 0)
+      config.max_people = std::max<size_t>(config.max_people, config_.max_people == 0 ? kMaxPeople : config_.max_people);
     if (config.model.empty()) {
       config.model = "movenet-multipose";
       config.mode = DetectMode::per_view;

@@ -17,13 +17,13 @@ constexpr double kDegree = M_PI / 180;
 // A limb bent less than this gives no hinge plane to trust (noise swings it round); fully trusted from the second.
 constexpr double kHingeFrom = 10 * kDegree, kHingeFull = 25 * kDegree;
 // Trusted fully once bent so far, every frame: smoothing the plane's roll over frames (half way each frame) lags behind
-// real motion more than it removes noise (tests/test_rig_rotations.cpp: upper arms 3.0 deg median instead of 2.4).
+// real motion more than it removes noise (tests/rig/test_rig_rotations.cpp: upper arms 3.0 deg median instead of 2.4).
 // A cue direction this close to the bone (sine of the angle between them) says nothing about its roll.
 constexpr double kCueFrom = 0.2, kCueFull = 0.5;
 // Per frame, how far a held roll moves toward the smallest rotation (about 1 s to halve at 30 frames/s).
 constexpr double kHoldDecay = 0.02;
 // How far the pelvis's up follows the spine (neck - root) rather than the world's up. Measured against CMU motion's
-// own hip rotations (tests/test_rig_rotations.cpp): 0 (the world's up) 5.3 deg median / 14.5 deg at the 90th
+// own hip rotations (tests/rig/test_rig_rotations.cpp): 0 (the world's up) 5.3 deg median / 14.5 deg at the 90th
 // percentile, 0.5 2.7 / 6.0, 0.7 2.2 / 5.4, 0.75 2.5 / 5.3, 1 (the spine) 3.7 / 8.2.
 constexpr double kPelvisFollowsSpine = 0.7;
 
@@ -58,7 +58,7 @@ struct RollRule {
 };
 
 // How far toward its cue a bone moves this frame. Most cues are followed at once: smoothing them lags behind real
-// motion more than it removes noise (tests/test_rig_rotations.cpp, arms: 1.5-2.7 deg median at once, 2.0-2.9 even with
+// motion more than it removes noise (tests/rig/test_rig_rotations.cpp, arms: 1.5-2.7 deg median at once, 2.0-2.9 even with
 // an adaptive filter). A foot's roll comes from a heel 6-9 cm off the ankle, where a centimetre of detection noise is
 // many degrees, and feet seldom roll fast: there the roll moves a quarter of the way each frame. Measured (90th
 // percentile of the frame-to-frame turn of the right foot on the real take; CMU feet against the truth, median / 90th):

@@ -3,7 +3,7 @@
 // is, the ankle is held on a lock that follows it slowly (a foot rolls from heel to toe) and the leg turns about the
 // hip to reach it (the thigh keeps its length, the knee its bend; the lock is never more than max_drift from the
 // measured ankle, so the shin changes by less), blended in and out over a few frames. Markerless ankles wander while
-// a foot is planted (three to five times the motion that is really there, tests/test_foot_lock.cpp): locking is what makes an avatar
+// a foot is planted (three to five times the motion that is really there, tests/rig/test_foot_lock.cpp): locking is what makes an avatar
 // stand instead of skate, and engines read the contacts for their own IK.
 #pragma once
 #include <array>

@@ -137,7 +137,7 @@ TEST_CASE("bone rotations follow the rig's true rotations: hinge limbs, chest tw
     // Measuring the roll beats leaving it out, for every bone but the root (whose rotation the swing chain keeps) and
     // the feet: CMU's feet hardly roll about their own axis (the swing from the shin is already their rotation), so
     // their measured roll can only add rig.noise; it must stay within a degree of the swing's (the roll itself is
-    // tested in tests/test_rig.cpp: a foot rolled 25 deg).
+    // tested in tests/rig/test_rig.cpp: a foot rolled 25 deg).
     if (p.bone == kBoneRFoot || p.bone == kBoneLFoot) CHECK(now.p90_deg < before.p90_deg + 1.0);
     else if (p.bone != kBoneRoot) CHECK(now.p90_deg < before.p90_deg);
   }
