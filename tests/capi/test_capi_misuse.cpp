@@ -1,7 +1,10 @@
 // Bad input through the public C ABI: the right error code, a message, and a session that still works.
+#include <algorithm>
 #include <catch2/catch_test_macros.hpp>
 #include <catch2/matchers/catch_matchers_string.hpp>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <limits>
 #include <string>
 #include <vector>
@@ -126,6 +129,74 @@ TEST_CASE("a calibration with one camera cannot make a session", "[capi][misuse]
   octocap_calibration_t* bad = nullptr;
   REQUIRE(octocap_calibration_create(&cam, 1, &bad) == OCTOCAP_ERROR_INVALID_ARGUMENT);
   REQUIRE_THAT(octocap_last_error(), ContainsSubstring("camera 0"));
+}
+
+// One rule for a camera, wherever it comes from: each value below is refused by octocap_calibration_create and by a
+// calibration TOML alike, with the same reason.
+TEST_CASE("an implausible camera is refused from the C ABI and from a calibration file, for the same reason",
+          "[capi][misuse]") {
+  struct Bad {
+    const char* what;
+    const char* reason;
+    double width, fx, rotation, translation;
+  };
+  const Bad bads[] = {{"size 0", "size must be 1 to 100000", 0, 1000, 0.1, 1},
+                      {"size 200000", "size must be 1 to 100000", 200000, 1000, 0.1, 1},
+                      {"focal length 0", "focal length is not > 0", 640, 0, 0.1, 1},
+                      {"rotation 2000 rad", "is not a rotation", 640, 1000, 2000, 1},
+                      {"translation 2e6 m", "beyond a million metres", 640, 1000, 0.1, 2e6},
+                      {"NaN translation", "NaN or infinite", 640, 1000, 0.1, std::nan("")}};
+  testing::TempDir dir;
+  for (const Bad& b : bads) {
+    INFO(b.what);
+    octocap_camera_t cam{};
+    std::snprintf(cam.name, sizeof cam.name, "cam_1");
+    cam.width = static_cast<uint32_t>(b.width);
+    cam.height = 480;
+    const double K[9] = {b.fx, 0, 320, 0, 1000, 240, 0, 0, 1};
+    std::copy(K, K + 9, cam.matrix);
+    cam.rotation[0] = b.rotation;
+    cam.translation[2] = b.translation;
+    octocap_calibration_t* c = nullptr;
+    CHECK(octocap_calibration_create(&cam, 1, &c) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+    CHECK(c == nullptr);
+    CHECK_THAT(octocap_last_error(), ContainsSubstring("camera 0: ") && ContainsSubstring(b.reason));
+    const std::string file = dir.file("bad.toml");
+    std::ofstream out(file);
+    out << std::fixed << "[cam_1]\nname = \"cam_1\"\nsize = [ " << b.width << ", 480.0]\nmatrix = [ [ " << b.fx
+                        << ", 0.0, 320.0], [ 0.0, 1000.0, 240.0], [ 0.0, 0.0, 1.0]]\ndistortions = [ 0.0, 0.0, 0.0, 0.0]\n"
+                        << "rotation = [ " << b.rotation << ", 0.0, 0.0]\ntranslation = [ 0.0, 0.0, "
+                        << (std::isnan(b.translation) ? std::string("nan") : std::to_string(b.translation)) << "]\n";
+    out.close();
+    CHECK(octocap_calibration_load(file.c_str(), &c) == OCTOCAP_ERROR_PARSE);
+    CHECK(c == nullptr);
+    CHECK_THAT(octocap_last_error(), ContainsSubstring("[cam_1]") && ContainsSubstring(b.reason));
+  }
+}
+
+// A sync file is only written if it reads back: octocap_sync_save refuses what octocap_sync_load would.
+TEST_CASE("sync files: what cannot be read back is not written", "[capi][misuse]") {
+  Fixture f;
+  testing::TempDir dir;
+  const std::string file = dir.file("sync.toml");
+  std::vector<double> offsets(f.cams.size(), 0.0);
+  const uint32_t n = static_cast<uint32_t>(offsets.size());
+  REQUIRE(octocap_sync_save(file.c_str(), 30, f.calib.get(), offsets.data(), n) == OCTOCAP_OK);
+  std::vector<double> back(n, 7.0);
+  double rate = 0;
+  REQUIRE(octocap_sync_load(file.c_str(), f.calib.get(), back.data(), n, &rate) == OCTOCAP_OK);
+  CHECK(rate == 30);
+  CHECK(back == offsets);
+  CHECK(octocap_sync_save(file.c_str(), 2e5, f.calib.get(), offsets.data(), n) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  CHECK(octocap_sync_save(file.c_str(), 0, f.calib.get(), offsets.data(), n) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  offsets[1] = 2e6;
+  CHECK(octocap_sync_save(file.c_str(), 30, f.calib.get(), offsets.data(), n) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  CHECK_THAT(octocap_last_error(), ContainsSubstring("million frames"));
+  offsets[1] = std::nan("");
+  CHECK(octocap_sync_save(file.c_str(), 30, f.calib.get(), offsets.data(), n) == OCTOCAP_ERROR_INVALID_ARGUMENT);
+  // The file written first is still the one there.
+  REQUIRE(octocap_sync_load(file.c_str(), f.calib.get(), back.data(), n, &rate) == OCTOCAP_OK);
+  CHECK(rate == 30);
 }
 
 TEST_CASE("camera-count mismatch, NaN keypoints, too few views", "[capi][misuse]") {

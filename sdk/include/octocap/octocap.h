@@ -2305,13 +2305,14 @@ OCTOCAP_API octocap_result_t octocap_recording_set_sync(octocap_recording_t* rec
 /**
  * Writes offsets as a sync TOML (`rate`, `[offsets_frames]` by the calibration's camera names).
  * @param[in] path           The file to write.
- * @param[in] rate_hz        The frame rate the offsets count in, > 0.
+ * @param[in] rate_hz        The frame rate the offsets count in, > 0 and at most 100000.
  * @param[in] calib          The calibration naming the cameras.
  * @param[in] offsets_frames `count` offsets, frames.
  * @param[in] count          The calibration's camera count.
  * @retval OCTOCAP_OK                     The file is written.
- * @retval OCTOCAP_ERROR_INVALID_ARGUMENT `path` or `offsets_frames` is NULL, an offset or the rate is NaN or
- *                                        infinite, or the rate is not > 0.
+ * @retval OCTOCAP_ERROR_INVALID_ARGUMENT `path` or `offsets_frames` is NULL, an offset is NaN, infinite or beyond a
+ *                                        million frames, or the rate is not > 0 and at most 100000 (what
+ *                                        octocap_sync_load() reads back).
  * @retval OCTOCAP_ERROR_INVALID_HANDLE   `calib` is not a live calibration.
  * @retval OCTOCAP_ERROR_CAMERA_MISMATCH  `count` is not the calibration's camera count.
  * @retval OCTOCAP_ERROR_IO               The file cannot be opened or written.

@@ -1,5 +1,7 @@
 // Calibration handles: load, save, build from cameras, inspect, project.
+#include <algorithm>
 #include <cstring>
+#include <iterator>
 
 #include "capi/boundary.h"
 #include "capi/camera_c.h"
@@ -12,27 +14,23 @@ using namespace octocap::internal;
 namespace {
 
 Camera from_c(const octocap_camera_t& c, uint32_t index) {
-  const std::string where = "camera " + std::to_string(index) + ": ";
-  for (double v : c.matrix) capi::require_finite(v, (where + "matrix").c_str());
-  for (double v : c.distortion) capi::require_finite(v, (where + "distortion").c_str());
-  for (double v : c.rotation) capi::require_finite(v, (where + "rotation").c_str());
-  for (double v : c.translation) capi::require_finite(v, (where + "translation").c_str());
-  if (c.width == 0 || c.height == 0 || c.width > kMaxImageSide || c.height > kMaxImageSide)
-    throw Error(Errc::invalid_argument, where + "width and height must be 1 to 100000");
-  if (!plausible_rotation_vector({c.rotation[0], c.rotation[1], c.rotation[2]}))
-    throw Error(Errc::invalid_argument, where + "rotation is not a rotation (a Rodrigues vector of at most 1000 radians)");
-  for (double v : c.translation)
-    if (std::abs(v) > 1e6) throw Error(Errc::invalid_argument, where + "translation is beyond a million metres");
-  if (c.matrix[0] <= 0 || c.matrix[4] <= 0) throw Error(Errc::invalid_argument, where + "focal lengths must be > 0");
+  CameraValues v;
+  v.width = c.width, v.height = c.height;
+  for (int i = 0; i < 9; ++i) v.matrix(i / 3, i % 3) = c.matrix[i];
+  std::copy(std::begin(c.distortion), std::end(c.distortion), v.distortion.begin());
+  v.rotation = {c.rotation[0], c.rotation[1], c.rotation[2]};
+  v.translation = {c.translation[0], c.translation[1], c.translation[2]};
+  if (const std::string why = implausible_camera(v); !why.empty())
+    throw Error(Errc::invalid_argument, "camera " + std::to_string(index) + ": " + why);
   Camera cam;
   cam.name.assign(c.name, strnlen(c.name, sizeof c.name));
   cam.width = static_cast<int>(c.width);
   cam.height = static_cast<int>(c.height);
-  for (int i = 0; i < 9; ++i) cam.K(i / 3, i % 3) = c.matrix[i];
-  for (int i = 0; i < 5; ++i) cam.dist[i] = c.distortion[i];
+  cam.K = v.matrix;
+  cam.dist = v.distortion;
   cam.fisheye = c.fisheye != 0;
-  cam.R = rodrigues_to_matrix({c.rotation[0], c.rotation[1], c.rotation[2]});
-  cam.t = {c.translation[0], c.translation[1], c.translation[2]};
+  cam.R = rodrigues_to_matrix(v.rotation);
+  cam.t = v.translation;
   return cam;
 }
 

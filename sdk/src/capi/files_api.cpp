@@ -179,9 +179,6 @@ octocap_result_t octocap_recording_estimate_sync(const octocap_recording_t* rec,
     capi::checked(rec, "recording");
     capi::checked(calib, "calibration");
     capi::require(offsets_frames, "offsets_frames");
-    capi::require_finite(max_offset_frames, "max_offset_frames");
-    if (!(max_offset_frames >= 0 && max_offset_frames <= 100000))
-      throw Error(Errc::invalid_argument, "max_offset_frames must be 0 .. 100000");
     if (count != calib->cameras.size())
       throw Error(Errc::camera_mismatch, "count is " + std::to_string(count) + ", the calibration has " +
                                              std::to_string(calib->cameras.size()) + " cameras");
@@ -213,12 +210,9 @@ octocap_result_t octocap_sync_save(const char* path, double rate_hz, const octoc
     SyncFile s;
     s.rate_hz = rate_hz;
     for (uint32_t c = 0; c < count; ++c) {
-      capi::require_finite(offsets_frames[c], "an offset");
       s.cameras.push_back(calib->cameras[c].name);
       s.offsets_frames.push_back(offsets_frames[c]);
     }
-    capi::require_finite(rate_hz, "rate_hz");
-    if (!(rate_hz > 0)) throw Error(Errc::invalid_argument, "rate_hz must be > 0");
     write_sync_toml(path, s);
   });
 }

@@ -111,7 +111,7 @@ octocap_result_t octocap_live_create(const octocap_live_config_t* given, const o
     config.session = capi::session_config(session_cfg);
     config.sync_tolerance_us = c.sync_tolerance_us;
     config.max_wait_us = c.max_wait_us;
-    config.remote_domain_id = capi::domain_id(c.remote_domain_id);
+    config.remote_domain_id = c.remote_domain_id;
     config.remote_topic = capi::topic_name(c.remote_topic, sizeof c.remote_topic, "cfg.remote_topic");
     config.remote_security = capi::c_text(c.remote_security, sizeof c.remote_security, "cfg.remote_security");
     if (c.quality != OCTOCAP_QUALITY_GOVERNED && c.quality != OCTOCAP_QUALITY_MAX)

@@ -51,9 +51,6 @@ octocap_result_t octocap_node_create(const octocap_node_config_t* given, const c
     const octocap_node_config_t c = capi::widen(*given, defaults);
     const FeedOptions feeds =
         capi::feed_options(c.open_timeout_ms, c.read_timeout_ms, c.reconnect_max_ms, c.picture_rate_hz);
-    capi::require_finite(c.detect_rate_hz, "cfg.detect_rate_hz");
-    if (!(c.detect_rate_hz >= 0.0f && c.detect_rate_hz <= 1000.0f))
-      throw Error(Errc::invalid_argument, "cfg.detect_rate_hz must be 0 (automatic) to 1000");
     const size_t name_len = strnlen(c.name, sizeof c.name);
     if (name_len == 0 || name_len == sizeof c.name)
       throw Error(Errc::invalid_argument, "cfg.name must be a NUL-terminated, non-empty name");
@@ -63,7 +60,7 @@ octocap_result_t octocap_node_create(const octocap_node_config_t* given, const c
 #ifdef OCTOCAP_HAVE_DDS
     NodeConfig config;
     config.name.assign(c.name, name_len);
-    config.domain_id = capi::domain_id(c.domain_id);
+    config.domain_id = c.domain_id;
     config.topic = capi::topic_name(c.topic, sizeof c.topic, "cfg.topic");
     config.security = capi::c_text(c.security, sizeof c.security, "cfg.security");
     config.feeds = feeds;

@@ -1,4 +1,5 @@
-// C stream settings -> StreamConfig, checked (used by session config and subscriber config).
+// C stream settings -> StreamConfig (used by session config and subscriber config): mapped, not judged; the DDS
+// publisher and subscriber check what they are given (StreamConfig::validate).
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -8,10 +9,8 @@
 
 namespace octocap::internal::capi {
 
-// A DDS topic base name from a C char array: NUL-terminated, non-empty, letters, digits and '_'.
+// A DDS topic base name from a C char array, NUL-terminated within it.
 std::string topic_name(const char* topic, size_t topic_capacity, const char* what);
-// 0..232 (Cyclone's domain ids).
-uint32_t domain_id(uint32_t id);
 StreamConfig stream_config(uint32_t domain_id, int32_t qos, uint32_t history_depth, uint32_t source_id,
                            const char* topic, size_t topic_capacity);
 

@@ -1,10 +1,24 @@
 #include "core/camera.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace octocap::internal {
+
+std::string implausible_camera(const CameraValues& v) {
+  const bool finite = std::isfinite(v.width) && std::isfinite(v.height) && v.matrix.allFinite() &&
+                      std::all_of(v.distortion.begin(), v.distortion.end(), [](double d) { return std::isfinite(d); }) &&
+                      v.rotation.allFinite() && v.translation.allFinite();
+  if (!finite) return "a value is NaN or infinite";
+  if (!(v.width >= 1 && v.height >= 1 && v.width <= 100000 && v.height <= 100000))
+    return "size must be 1 to 100000 pixels each side";
+  if (v.matrix(0, 0) <= 0 || v.matrix(1, 1) <= 0) return "a focal length is not > 0";
+  if (v.rotation.norm() > 1000) return "rotation is not a rotation (a Rodrigues vector of at most 1000 radians)";
+  if (v.translation.cwiseAbs().maxCoeff() > 1e6) return "translation is beyond a million metres";
+  return "";
+}
 
 bool Camera::has_distortion() const {
   for (double d : dist)

@@ -7,12 +7,20 @@
 
 namespace octocap::internal {
 
-// A Rodrigues vector a calibration can mean: finite and at most 1000 radians long (beyond that the angle's last
-// digits are gone and the rotation is noise).
-inline bool plausible_rotation_vector(const Eigen::Vector3d& r) { return r.allFinite() && r.norm() <= 1000.0; }
+// A camera's values as a calibration file or a caller gives them, before they become a Camera.
+struct CameraValues {
+  double width = 0, height = 0;                        // pixels
+  Eigen::Matrix3d matrix = Eigen::Matrix3d::Identity();  // K
+  std::array<double, 5> distortion{};
+  Eigen::Vector3d rotation = Eigen::Vector3d::Zero();     // Rodrigues, world -> camera
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();  // metres
+};
 
-// Image sizes a camera can have (pixels, each side).
-constexpr double kMaxImageSide = 100000;
+// Why these values cannot be a camera ("" when they can): a value NaN or infinite, a size of 0 or beyond 100000
+// pixels a side, a focal length <= 0, a rotation vector longer than 1000 radians (its angle's last digits are gone:
+// noise, not a rotation), a translation beyond a million metres. The one rule for every camera that comes in (the
+// calibration TOML, the C ABI).
+std::string implausible_camera(const CameraValues& v);
 
 struct Camera;
 

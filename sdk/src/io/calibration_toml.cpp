@@ -55,33 +55,33 @@ void expect_count(const std::vector<double>& v, size_t n, const char* key, const
 
 Camera read_camera(const TableRef& ref, const std::string& path) {
   const toml::table& t = *ref.table;
-  Camera cam;
-  cam.name = t["name"].value_or(ref.key);
+  CameraValues v;
   const auto size = numbers(t, "size", path, ref.key);
   expect_count(size, 2, "size", path, ref.key);
-  if (!(size[0] >= 1 && size[1] >= 1 && size[0] <= kMaxImageSide && size[1] <= kMaxImageSide))
-    fail(path, ref.key, "'size' must be 1 to 100000 pixels each side");
-  cam.width = static_cast<int>(std::lround(size[0]));
-  cam.height = static_cast<int>(std::lround(size[1]));
+  v.width = size[0], v.height = size[1];
   const auto m = numbers(t, "matrix", path, ref.key);
   expect_count(m, 9, "matrix", path, ref.key);
-  for (int i = 0; i < 9; ++i) cam.K(i / 3, i % 3) = m[i];
-  if (cam.K(0, 0) <= 0 || cam.K(1, 1) <= 0) fail(path, ref.key, "'matrix' has a non-positive focal length");
-  cam.fisheye = t["fisheye"].value_or(false);
+  for (int i = 0; i < 9; ++i) v.matrix(i / 3, i % 3) = m[i];
   const auto d = numbers(t, "distortions", path, ref.key);
   if (d.size() < 4 || d.size() > 5)
     fail(path, ref.key, "'distortions' must have 4 or 5 numbers, has " + std::to_string(d.size()));
-  std::copy(d.begin(), d.end(), cam.dist.begin());
+  std::copy(d.begin(), d.end(), v.distortion.begin());
   const auto r = numbers(t, "rotation", path, ref.key);
   expect_count(r, 3, "rotation", path, ref.key);
-  if (!plausible_rotation_vector({r[0], r[1], r[2]}))
-    fail(path, ref.key, "'rotation' is not a rotation (a Rodrigues vector of at most 1000 radians)");
-  cam.R = rodrigues_to_matrix({r[0], r[1], r[2]});
+  v.rotation = {r[0], r[1], r[2]};
   const auto tr = numbers(t, "translation", path, ref.key);
   expect_count(tr, 3, "translation", path, ref.key);
-  if (std::abs(tr[0]) > 1e6 || std::abs(tr[1]) > 1e6 || std::abs(tr[2]) > 1e6)
-    fail(path, ref.key, "'translation' is beyond a million metres");
-  cam.t = {tr[0], tr[1], tr[2]};
+  v.translation = {tr[0], tr[1], tr[2]};
+  if (const std::string why = implausible_camera(v); !why.empty()) fail(path, ref.key, why);
+  Camera cam;
+  cam.name = t["name"].value_or(ref.key);
+  cam.width = static_cast<int>(std::lround(v.width));
+  cam.height = static_cast<int>(std::lround(v.height));
+  cam.K = v.matrix;
+  cam.dist = v.distortion;
+  cam.fisheye = t["fisheye"].value_or(false);
+  cam.R = rodrigues_to_matrix(v.rotation);
+  cam.t = v.translation;
   return cam;
 }
 

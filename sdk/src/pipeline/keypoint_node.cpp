@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "stream/keypoint_publisher.h"
+#include "stream/stream_config.h"
 
 namespace octocap::internal {
 namespace {
@@ -46,6 +47,9 @@ KeypointNode::KeypointNode(const NodeConfig& config, const std::vector<std::stri
     : config_(config) {
   if (cameras.empty()) throw Error(Errc::invalid_argument, "a capture node needs at least one camera");
   config_.feeds.validate();
+  check_dds_names(config_.domain_id, config_.topic, "node");
+  if (!(config_.detect_rate_hz >= 0 && config_.detect_rate_hz <= 1000))  // NaN fails too
+    throw Error(Errc::invalid_argument, "detect_rate_hz must be 0 (automatic) to 1000");
   if (!names.empty() && names.size() != cameras.size())
     throw Error(Errc::invalid_argument, std::to_string(names.size()) + " camera names for " +
                                             std::to_string(cameras.size()) + " cameras");

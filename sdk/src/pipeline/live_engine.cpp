@@ -14,6 +14,7 @@
 #include "core/stats.h"
 #include "pipeline/live_recorder.h"
 #include "pipeline/rate_governor.h"
+#include "stream/stream_config.h"
 
 namespace octocap::internal {
 namespace {
@@ -28,6 +29,7 @@ void accumulate(double& mean, double value, uint64_t n) { mean += (value - mean)
 
 void LiveConfig::validate() const {
   feeds.validate();
+  check_dds_names(remote_domain_id, remote_topic, "remote cameras'");
   if (!(target_fps >= 0 && target_fps <= 1000))  // NaN fails too
     throw Error(Errc::invalid_argument, "target_fps must be 0 (the cameras' rate) to 1000");
   if (!(latency_budget_ms >= 10 && latency_budget_ms <= 10000))

@@ -41,6 +41,8 @@ double epipolar_px(const PairGeometry& g, const Eigen::Vector2d& na, const Eigen
 SyncEstimate estimate_time_offsets(const Calibration& calib,
                                    const std::vector<std::vector<std::vector<Person2D>>>& frames, const SyncOptions& o) {
   const size_t V = calib.size(), F = frames.size();
+  if (!(o.max_offset_frames >= 0 && o.max_offset_frames <= 100000))  // NaN fails too
+    throw Error(Errc::invalid_argument, "max_offset_frames must be 0 .. 100000");
   for (const auto& f : frames)
     if (f.size() != V)
       throw Error(Errc::invalid_argument, "a frame has " + std::to_string(f.size()) + " views, the calibration has " +

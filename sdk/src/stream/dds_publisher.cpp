@@ -19,7 +19,7 @@ struct DdsPublisher::Impl {
 };
 
 DdsPublisher::DdsPublisher(const StreamConfig& config, LayoutId layout, uint32_t definition_counter)
-    : impl_(std::make_unique<Impl>(config.domain_id, config.security)),
+    : impl_((config.validate(), std::make_unique<Impl>(config.domain_id, config.security))),
       config_(config),
       capacity_(config.qos == StreamQos::record ? std::max<size_t>(config.history_depth, 64) : 1) {
   DdsParticipant& p = impl_->participant;

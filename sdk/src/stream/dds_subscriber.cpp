@@ -15,7 +15,7 @@ struct DdsSubscriber::Impl {
 };
 
 DdsSubscriber::DdsSubscriber(const StreamConfig& config)
-    : impl_(std::make_unique<Impl>(config.domain_id, config.security)), config_(config) {
+    : impl_((config.validate(), std::make_unique<Impl>(config.domain_id, config.security))), config_(config) {
   DdsParticipant& p = impl_->participant;
   const dds_entity_t def_topic =
       p.topic(&octocap_wire_SkeletonDefinition_desc, topic_name(config.topic, kDefinitionTopicSuffix));
