@@ -99,6 +99,15 @@ TEST_CASE("octocap solve refuses bad input with a clear message", "[cli]") {
   r = run("sync --calibration x.toml --zzzqqqxx 3");
   CHECK(WEXITSTATUS(r.status) == 2);
   CHECK_THAT(r.output, ContainsSubstring("unknown option --zzzqqqxx (octocap sync --help lists them)"));
+  // --output is TRC: a .csv or .bvh name would get TRC under it, so it is refused, naming the option that writes it.
+  r = run("solve --calibration " + kSample + "/calibration.toml --keypoints " + kSample + "/keypoints --output " +
+          dir.file("a.CSV"));
+  CHECK(r.status != 0);
+  CHECK_THAT(r.output, ContainsSubstring("--output writes TRC; for CSV give --csv"));
+  CHECK_FALSE(std::filesystem::exists(dir.file("a.CSV")));
+  r = run("live --calibration " + kSample + "/calibration.toml --camera 0 --output " + dir.file("take.bvh"));
+  CHECK(r.status != 0);
+  CHECK_THAT(r.output, ContainsSubstring("for BVH give --bvh"));
 }
 
 TEST_CASE("octocap --help and layouts", "[cli]") {

@@ -1,6 +1,8 @@
 // octocap: the command line. `octocap solve` turns a multi-camera 2D keypoint recording into 3D.
 #include <CLI/CLI.hpp>
+#include <cctype>
 #include <cstdio>
+#include <string>
 
 #include "octocap/octocap.h"
 #include "detect_command.h"
@@ -46,7 +48,19 @@ void add_people_option(CLI::App* app, std::string& people) {
       ->check(CLI::IsMember({"auto"}) | CLI::Range(1, 16))->capture_default_str();
 }
 
-// Solve and live alike.
+// Solve and live alike: --output is always TRC, so a name that says another format is a mistake, not a request (the
+// file would hold TRC under a .csv or .bvh name).
+const CLI::Validator kTrcName(
+    [](std::string& name) -> std::string {
+      const auto dot = name.rfind('.');
+      std::string ext = dot == std::string::npos ? "" : name.substr(dot);
+      for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (ext == ".csv") return "--output writes TRC; for CSV give --csv " + name;
+      if (ext == ".bvh") return "--output writes TRC; for BVH give --bvh " + name;
+      return "";
+    },
+    "TRC", "TRC file name");
+
 void add_foot_lock_flag(CLI::App* app, bool& foot_lock) {
   app->add_flag("--foot-lock", foot_lock, "Hold planted feet still: a foot on the floor keeps its place while the solve's noise would make it skate (its ankle, knee and foot; contacts are reported either way)");
 }
@@ -65,7 +79,7 @@ int main(int argc, char** argv) {
   sc->add_option("--frames", solve.max_frames, "Solve at most this many frames (0: all)")->capture_default_str();
   sc->add_option("--debug-images", solve.debug_images, "With --images: write each view with detections and reprojected 3D keypoints as PNG");
   add_detector_options(sc, solve.detector);
-  sc->add_option("--output", solve.output, "Output TRC file")->required();
+  sc->add_option("--output", solve.output, "Output TRC file")->required()->check(kTrcName);
   sc->add_option("--csv", solve.csv, "Also write a CSV (calibration world frame)");
   sc->add_option("--bvh", solve.bvh, "Also write the bone animation as BVH (Y up, centimetres)");
   sc->add_option("--method", solve.method, "3D method (auto: subdivision with 5+ cameras, else triangulation)")->check(CLI::IsMember({"auto", "subdivision", "triangulation"}))->capture_default_str();
@@ -118,7 +132,7 @@ int main(int argc, char** argv) {
   lv->add_option("--duration", live.duration_s, "Stop after this many seconds (0: when the cameras end, or Ctrl-C)")->capture_default_str();
   lv->add_option("--picture-rate", live.picture_rate_hz, "Rate of picture-folder cameras")->check(CLI::PositiveNumber)->capture_default_str();
   lv->add_option("--rate", live.rate_hz, "TRC and BVH rows at this fixed rate, Hz, the sets resampled onto it (default: the take's own mean set rate); the CSV keeps each set's time")->check(CLI::PositiveNumber);
-  lv->add_option("--output", live.output, "Write the take as TRC");
+  lv->add_option("--output", live.output, "Write the take as TRC")->check(kTrcName);
   lv->add_option("--csv", live.csv, "Also write a CSV (calibration world frame)");
   lv->add_option("--bvh", live.bvh, "Also write the bone animation as BVH");
   lv->add_option("--record", live.record, "Record the take into this new folder: calibration.toml, images/ (pictures), keypoints/ (OpenPose JSON), timestamps.csv; solve it again with octocap solve --keypoints DIR/keypoints");
