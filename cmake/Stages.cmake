@@ -1,7 +1,8 @@
 # The stages of DESIGN.md as libraries. octocap_stage(NAME SOURCES ... [STAGES earlier ...] [PUBLIC libs ...]
 # [PRIVATE libs ... [OPENCV]]) makes octocap_stage_NAME, a static library (PIC, hidden symbols: liboctocap.so exports
 # the C ABI alone) that links the earlier stages it names and its own third-party libraries. OPENCV in PRIVATE puts
-# OpenCV's headers on the stage's include path (Debian's per-module packages ship no CMake config).
+# OpenCV's headers on the include path of the stage and of the stages built on it, whose headers may hold cv::Mat
+# (Debian's per-module packages ship no CMake config).
 
 function(octocap_stage stage)
   cmake_parse_arguments(S "" "" "SOURCES;STAGES;PUBLIC;PRIVATE" ${ARGN})
@@ -43,7 +44,8 @@ function(octocap_stage_checks)
     return()
   endif()
   set(empty ${CMAKE_CURRENT_BINARY_DIR}/stage_check.cpp)
-  file(WRITE ${empty} "// the stage's objects are the library: see cmake/Stages.cmake\n")
+  # Written only when it changes, so that configuring again relinks nothing.
+  file(CONFIGURE OUTPUT ${empty} CONTENT "// the stage's objects are the library: see cmake/Stages.cmake\n")
   get_property(stages GLOBAL PROPERTY OCTOCAP_STAGES)
   foreach(stage ${stages})
     add_library(octocap_check_${stage} SHARED ${empty})

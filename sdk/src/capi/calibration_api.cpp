@@ -15,6 +15,8 @@ namespace {
 
 Camera from_c(const octocap_camera_t& c, uint32_t index) {
   CameraValues v;
+  v.name.assign(c.name, strnlen(c.name, sizeof c.name));
+  v.fisheye = c.fisheye != 0;
   v.width = c.width, v.height = c.height;
   for (int i = 0; i < 9; ++i) v.matrix(i / 3, i % 3) = c.matrix[i];
   std::copy(std::begin(c.distortion), std::end(c.distortion), v.distortion.begin());
@@ -22,16 +24,7 @@ Camera from_c(const octocap_camera_t& c, uint32_t index) {
   v.translation = {c.translation[0], c.translation[1], c.translation[2]};
   if (const std::string why = implausible_camera(v); !why.empty())
     throw Error(Errc::invalid_argument, "camera " + std::to_string(index) + ": " + why);
-  Camera cam;
-  cam.name.assign(c.name, strnlen(c.name, sizeof c.name));
-  cam.width = static_cast<int>(c.width);
-  cam.height = static_cast<int>(c.height);
-  cam.K = v.matrix;
-  cam.dist = v.distortion;
-  cam.fisheye = c.fisheye != 0;
-  cam.R = rodrigues_to_matrix(v.rotation);
-  cam.t = v.translation;
-  return cam;
+  return camera_of(v);
 }
 
 }  // namespace

@@ -20,6 +20,19 @@ std::string implausible_camera(const CameraValues& v) {
   return "";
 }
 
+Camera camera_of(const CameraValues& v) {
+  Camera cam;
+  cam.name = v.name;
+  cam.width = static_cast<int>(std::lround(v.width));
+  cam.height = static_cast<int>(std::lround(v.height));
+  cam.K = v.matrix;
+  cam.dist = v.distortion;
+  cam.fisheye = v.fisheye;
+  cam.R = rodrigues_to_matrix(v.rotation);
+  cam.t = v.translation;
+  return cam;
+}
+
 bool Camera::has_distortion() const {
   for (double d : dist)
     if (d != 0.0) return true;

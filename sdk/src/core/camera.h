@@ -9,6 +9,8 @@ namespace octocap::internal {
 
 // A camera's values as a calibration file or a caller gives them, before they become a Camera.
 struct CameraValues {
+  std::string name;
+  bool fisheye = false;
   double width = 0, height = 0;                        // pixels
   Eigen::Matrix3d matrix = Eigen::Matrix3d::Identity();  // K
   std::array<double, 5> distortion{};
@@ -23,6 +25,9 @@ struct CameraValues {
 std::string implausible_camera(const CameraValues& v);
 
 struct Camera;
+
+// The camera of values implausible_camera() accepts (the size rounded to whole pixels).
+Camera camera_of(const CameraValues& v);
 
 // Why a picture of `width` x `height` cannot be this camera's ("" when it can): the same picture at another size (a
 // preview stream, a downscaled render) is fine, another aspect ratio is another picture, or another camera. The one

@@ -73,16 +73,9 @@ Camera read_camera(const TableRef& ref, const std::string& path) {
   expect_count(tr, 3, "translation", path, ref.key);
   v.translation = {tr[0], tr[1], tr[2]};
   if (const std::string why = implausible_camera(v); !why.empty()) fail(path, ref.key, why);
-  Camera cam;
-  cam.name = t["name"].value_or(ref.key);
-  cam.width = static_cast<int>(std::lround(v.width));
-  cam.height = static_cast<int>(std::lround(v.height));
-  cam.K = v.matrix;
-  cam.dist = v.distortion;
-  cam.fisheye = t["fisheye"].value_or(false);
-  cam.R = rodrigues_to_matrix(v.rotation);
-  cam.t = v.translation;
-  return cam;
+  v.name = t["name"].value_or(ref.key);
+  v.fisheye = t["fisheye"].value_or(false);
+  return camera_of(v);
 }
 
 // A TOML basic string: quotes, backslashes and control characters escaped, so any name reads back as written.
