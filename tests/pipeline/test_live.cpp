@@ -286,9 +286,16 @@ TEST_CASE("live: the rate governor reports its choice; a target no host can hold
     live.set_detector(detector);
     live.start();
     uint64_t frames = 0;
-    while (live.take(10000)) ++frames;  // until the folders played out
+    // The most views one set sent through the network over the take: the last set alone can hold fewer cameras
+    // than there are (the folders end a few milliseconds apart; on a loaded host one lags), so it cannot say.
+    uint32_t most_views_detected = 0;
+    while (live.take(10000)) {  // until the folders played out
+      ++frames;
+      most_views_detected = std::max(most_views_detected, live.stats().views_detected);
+    }
     const octocap_live_stats_t s = live.stats();
-    INFO("sets " << s.frame_sets << ", rung " << s.quality_rung << " of " << s.quality_rungs << ", " << s.model
+    INFO("sets " << s.frame_sets << ", incomplete " << s.sets_incomplete << ", most views detected in a set "
+                 << most_views_detected << ", rung " << s.quality_rung << " of " << s.quality_rungs << ", " << s.model
                  << " on " << s.views_detected << " views, budget used " << s.budget_used << ", changes "
                  << s.rung_changes);
     REQUIRE(frames >= 5);
@@ -311,7 +318,7 @@ TEST_CASE("live: the rate governor reports its choice; a target no host can hold
     } else {
       CHECK(s.quality_rung == 0);
       CHECK(std::string(s.model) == "movenet-thunder");
-      CHECK(s.views_detected == 4);
+      CHECK(most_views_detected == 4);  // the best rung: Thunder on every view, the whole take (no rung change)
       CHECK(s.rung_changes == 0);
       CHECK(s.budget_used < 1);
     }
