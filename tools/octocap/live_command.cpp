@@ -110,7 +110,7 @@ int live(const LiveOptions& o) {
               s.latency_p99_ms, s.fps);
   if (s.quality_rungs > 0)
     std::printf("  quality governed at %.1f sets/s: last set %s on %u of %u views (rung %u of %u, %.0f %% of its budget), "
-                "%u rung changes\n", s.target_fps, s.model, s.views_detected, s.camera_count, s.quality_rung + 1,
+                "%u rung changes\n", s.target_fps, s.model, s.views_detected, s.views_in_set, s.quality_rung + 1,
                 s.quality_rungs, 100.0 * s.budget_used, s.rung_changes);
   for (uint32_t c = 0; c < s.camera_count; ++c) {
     const octocap_camera_status_t cam = capture.camera(c);

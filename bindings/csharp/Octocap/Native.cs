@@ -466,6 +466,8 @@ namespace Octocap
         public uint RungChanges;
         /// <summary>1.8. The model card's name of the network that ran the last set.</summary>
         public Name32 Model;
+        /// <summary>1.13. Cameras the last set held; CameraCount for a complete set.</summary>
+        public uint ViewsInSet;
     }
 
     /// <summary>octocap_live_quality_t (1.8).</summary>

@@ -112,7 +112,7 @@ static void layout(void) {
   FIELD(octocap_live_stats_t, failed); FIELD(octocap_live_stats_t, last_error);
   FIELD(octocap_live_stats_t, quality_rung); FIELD(octocap_live_stats_t, quality_rungs);
   FIELD(octocap_live_stats_t, views_detected); FIELD(octocap_live_stats_t, target_fps);
-  FIELD(octocap_live_stats_t, budget_used); FIELD(octocap_live_stats_t, rung_changes); FIELD(octocap_live_stats_t, model);
+  FIELD(octocap_live_stats_t, budget_used); FIELD(octocap_live_stats_t, rung_changes); FIELD(octocap_live_stats_t, model); FIELD(octocap_live_stats_t, views_in_set);
   SIZE(octocap_camera_status_t);
   FIELD(octocap_camera_status_t, struct_size); FIELD(octocap_camera_status_t, state);
   FIELD(octocap_camera_status_t, grabbed); FIELD(octocap_camera_status_t, used); FIELD(octocap_camera_status_t, dropped);

@@ -42,6 +42,9 @@ namespace Octocap.Tests
                             }
                     Assert.GreaterOrEqual(withPerson, 1);
                     Assert.AreEqual(1u, live.Stats.Finished);
+                    LiveStats last = live.Stats;
+                    Assert.That(last.ViewsInSet, Is.InRange(1u, 4u), "the cameras the last set held (1.13)");
+                    Assert.LessOrEqual(last.ViewsDetected, last.ViewsInSet, "detected among the set's views");
                     live.Stop();
                     Assert.AreEqual(live.Stats.FrameSets, live.Stats.SetsRecorded, "every solved set is recorded");
                     Assert.IsTrue(System.IO.File.Exists(System.IO.Path.Combine(take, "timestamps.csv")));

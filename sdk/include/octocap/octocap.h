@@ -120,7 +120,7 @@ extern "C" {
  *  @since 1.0 */
 #define OCTOCAP_VERSION_MAJOR 1
 /** Minor version of this header: grows with each release that adds to the API. @since 1.0 */
-#define OCTOCAP_VERSION_MINOR 12
+#define OCTOCAP_VERSION_MINOR 13
 /** Patch version of this header: a release of fixes that leaves the API as it was. @since 1.0 */
 #define OCTOCAP_VERSION_PATCH 0
 /** MAJOR * 10000 + MINOR * 100 + PATCH: 10000 for 1.0.0. @since 1.0 */
@@ -1581,6 +1581,12 @@ typedef struct octocap_live_stats_t {
   uint32_t rung_changes;         /**< Times the governor changed rung since start. @since 1.8 */
   char model[OCTOCAP_NAME_CAPACITY]; /**< The model card's name of the network that ran the last set ("" none).
                                       @since 1.8 */
+  /* 1.13 */
+  uint32_t views_in_set;         /**< Cameras the last set held (a picture, or a capture node's keypoints): camera_count
+                                      for a complete set, fewer where a camera's picture missed it (sets_incomplete).
+                                      `views_detected` counts among these. It takes what was the struct's end padding,
+                                      so its size is unchanged: a 1.8-1.12 library leaves it as the caller set it.
+                                      @since 1.13 */
 } octocap_live_stats_t;
 
 /** State of one camera. @since 1.0 */

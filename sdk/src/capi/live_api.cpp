@@ -206,6 +206,7 @@ octocap_result_t octocap_live_get_stats(const octocap_live_t* l, octocap_live_st
       o.quality_rung = s.quality_rung;
       o.quality_rungs = s.quality_rungs;
       o.views_detected = s.views_detected;
+      o.views_in_set = s.views_in_set;
       o.target_fps = static_cast<float>(s.target_fps);
       o.budget_used = static_cast<float>(s.budget_used);
       o.rung_changes = static_cast<uint32_t>(s.rung_changes);

@@ -335,6 +335,7 @@ void LiveEngine::solve_set(const std::vector<CapturedFrame>& frames, const std::
     if (std::find(present.begin(), present.end(), false) != present.end()) ++stats_.sets_incomplete;
     if (solved) ++stats_.frames_with_person;
     stats_.views_detected = views_detected;
+    stats_.views_in_set = static_cast<uint32_t>(std::count(present.begin(), present.end(), true));
     const double latency = static_cast<double>(monotonic_us() - oldest_grab) / 1000.0;
     accumulate(stats_.capture_ms, static_cast<double>(t0 - oldest_grab) / 1000.0, k);
     accumulate(stats_.detect_ms, detect_ms, k);

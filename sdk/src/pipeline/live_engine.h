@@ -68,6 +68,7 @@ struct LiveStats {
   // and how much of a set's budget the sets used (smoothed; above 1 it steps down).
   uint32_t quality_rung = 0, quality_rungs = 0;
   uint32_t views_detected = 0;
+  uint32_t views_in_set = 0;  // cameras the last set held (a picture or a node's keypoints)
   std::string model;
   double target_fps = 0;
   double budget_used = 0;
