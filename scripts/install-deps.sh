@@ -30,7 +30,7 @@ $SUDO apt-get install -y -q --no-install-recommends \
   libassimp-dev libosmesa6-dev libglfw3-dev xvfb xauth \
   clang-14 libclang-rt-14-dev \
   ffmpeg \
-  doxygen \
+  doxygen debootstrap patchelf \
   gstreamer1.0-rtsp gir1.2-gst-rtsp-server-1.0 python3-gi gstreamer1.0-plugins-good gstreamer1.0-plugins-bad
 $SUDO apt-get install -y -q --no-install-recommends -t bookworm-backports libcatch2-dev
 # Node.js + npm convert the shipped pose models (scripts/fetch-models.sh); keep a Node.js already installed.
