@@ -45,7 +45,14 @@ cleanup() {
 trap cleanup EXIT
 grep -q " $CLEAN/" /proc/mounts && { echo "check-portable: $CLEAN has mounts" >&2; exit 1; }
 rm -rf --one-file-system "$CLEAN" && mkdir -p "$CLEAN" && tar -C "$CLEAN" -xf "$BASE"
-for fs in proc sys dev; do mount --bind "/$fs" "$CLEAN/$fs" && mounted=("$CLEAN/$fs" "${mounted[@]}"); done
+# /proc is where the loader reads the program's own path to expand $ORIGIN (/proc/self/exe): without it the tools
+# cannot find lib/, as on any Linux without /proc. /sys and /dev tell the inference runtimes the CPU's cores and caches.
+mount --bind /proc "$CLEAN/proc" || { echo "check-portable: cannot mount /proc in the root" >&2; exit 1; }
+mounted=("$CLEAN/proc")
+for fs in sys dev; do
+  if mount --bind "/$fs" "$CLEAN/$fs"; then mounted=("$CLEAN/$fs" "${mounted[@]}");
+  else echo "check-portable: /$fs could not be mounted in the root; going on without it" >&2; fi
+done
 cp -a "$RELEASE" "$CLEAN/opt/octocap"
 # Real pictures for the from-pixels solve: data, not part of the release.
 VIDEOS="$ROOT/.cache/pose2sim-0.10.49/Demo_SinglePerson/videos"
