@@ -448,14 +448,19 @@ void Session::finish_person(PersonResult& person, PersonState& state, double dt)
   SkeletonJoints locked = rig_joints;
   const FootContacts contacts = state.feet.apply(locked, dt);
   person.foot_contact = {contacts.right, contacts.left};
+  state.lock_shift.clear();
   if (config_.foot_lock) {
     std::vector<bool> moved(K, false);
     for (int j = 0; j < kJointCount; ++j) {
       if (!person.joints[j].valid || locked[j] == rig_joints[j]) continue;
       const Eigen::Vector3d delta = z_up_ ? yup_to_zup(locked[j] - rig_joints[j]) : Eigen::Vector3d(locked[j] - rig_joints[j]);
       person.joints[j].position += delta;
-      for (int k : *sources[j])
-        if (!moved[k]) person.keypoints[k].position += delta, moved[k] = true;
+      for (int k : *sources[j]) {
+        if (moved[k]) continue;
+        person.keypoints[k].position += delta, moved[k] = true;
+        if (state.lock_shift.empty()) state.lock_shift.assign(K, Eigen::Vector3d::Zero());
+        state.lock_shift[k] = delta;
+      }
     }
     rig_joints = locked;
   }

@@ -134,6 +134,9 @@ class Session {
     std::vector<double> noise_px;  // per keypoint, the smoothed reprojection error (0: none yet)
     BoneSolver bone_solver;
     FootLock feet;
+    // Per keypoint, how far foot_lock moved it this frame (world frame; empty: nothing moved). The crops follow the
+    // measured person, not the locked one: a lock must not change what the network is shown next.
+    std::vector<Eigen::Vector3d> lock_shift;
   };
   PersonState new_person_state() const;
   PointResult solve_keypoint(const std::vector<ViewRay>& rays) const;
@@ -165,6 +168,7 @@ class Session {
   std::vector<std::unique_ptr<FrameSink>> sinks_;  // DDS stream, VMC: fed every frame
 
   std::vector<std::vector<Person2D>> reprojected_people() const;
+  const PersonState* state_of(uint32_t id) const;  // the person's state (the one person's when max_people is 1)
   // Each solved person's every keypoint, where it was last seen, moved along with the person since (NaN: never seen).
   void remember_whole_people();
   std::map<uint32_t, std::vector<Eigen::Vector3d>> whole_people_;

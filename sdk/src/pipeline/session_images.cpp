@@ -28,6 +28,12 @@ void Session::remember_whole_people() {
   whole_people_ = std::move(kept);  // someone no longer solved is no longer followed
 }
 
+const Session::PersonState* Session::state_of(uint32_t id) const {
+  if (config_.max_people == 1) return &single_;
+  const auto it = states_.find(id);
+  return it == states_.end() ? nullptr : &it->second;
+}
+
 std::vector<std::vector<Person2D>> Session::reprojected_people() const {
   std::vector<std::vector<Person2D>> hints(calib_.size());
   if (!solved_any_ || frame_.info.keypoints_solved == 0) return hints;
@@ -40,13 +46,18 @@ std::vector<std::vector<Person2D>> Session::reprojected_people() const {
   constexpr double kRemembered = 2 * Detector::kHintConfidence;
   for (const PersonResult& person : frame_.people) {
     const auto whole = whole_people_.find(person.id);
+    const PersonState* state = state_of(person.id);
+    const bool locked = state && state->lock_shift.size() == person.keypoints.size();
     for (size_t v = 0; v < calib_.size(); ++v) {
       Person2D p(person.keypoints.size());
       for (size_t k = 0; k < person.keypoints.size(); ++k) {
         const bool valid = person.keypoints[k].valid;
         const bool remembered = whole != whole_people_.end() && k < whole->second.size() && whole->second[k].allFinite();
         if (!valid && !remembered) continue;
-        const Eigen::Vector2d px = calib_[v].project(valid ? person.keypoints[k].position : whole->second[k]);
+        // Where the keypoint was measured: a planted foot's lock is taken back off (see PersonState::lock_shift).
+        const Eigen::Vector3d measured =
+            locked ? Eigen::Vector3d(person.keypoints[k].position - state->lock_shift[k]) : person.keypoints[k].position;
+        const Eigen::Vector2d px = calib_[v].project(valid ? measured : whole->second[k]);
         if (std::isfinite(px.x()) && std::isfinite(px.y())) p[k] = {px.x(), px.y(), valid ? 1.0 : kRemembered};
       }
       hints[v].push_back(std::move(p));
