@@ -233,7 +233,7 @@ def help_options(binary, args, cache):
             m = HELP_OPTION.match(line)
             if m and section != "subcommands":
                 for name in m.group(1).split(","):
-                    options.add(name.split("=")[0])
+                    options.add(re.split(r"[={]", name)[0])  # CLI11: --opt=DEFAULT, --flag{false} (a negation's default)
             elif section == "subcommands":
                 s = re.match(r"^ {1,4}(\S+)", line)
                 if s:

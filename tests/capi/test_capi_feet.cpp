@@ -127,7 +127,7 @@ TEST_CASE("foot_lock is 0 or 1, and a 1.0 caller's person struct is filled up to
   const testing::Calib calib = testing::make_calibration(cams);
   octocap_session_config_t cfg;
   octocap_session_config_init(&cfg);
-  CHECK(cfg.foot_lock == 0);
+  CHECK(cfg.foot_lock == 1);  // the default since 1.13
   cfg.foot_lock = 2;
   octocap_session_t* s = nullptr;
   CHECK(octocap_session_create(&cfg, calib.get(), &s) == OCTOCAP_ERROR_INVALID_ARGUMENT);

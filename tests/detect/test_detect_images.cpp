@@ -230,3 +230,75 @@ TEST_CASE("solve_images refuses what it cannot do, clearly") {
   detector.mode = 7;
   CHECK(octocap_session_set_detector(coco.get(), &detector) == OCTOCAP_ERROR_INVALID_ARGUMENT);
 }
+
+TEST_CASE("foot_lock does not change what the network is shown: the crops follow the measured feet, not the held ones") {
+  // The next frame's crops come from this frame's 3D. Were they made from the locked ankles, a lock would move the
+  // crops, the network would see other pixels and the detections (all keypoints, not only the feet) would differ
+  // with and without the lock: the cost seen from pixels before the crops followed the measured person.
+  testing::Calib calib = load_demo_calibration();
+  std::vector<cv::VideoCapture> videos = open_demo_videos();
+  struct Run {
+    std::vector<std::vector<float>> detections;  // per frame, every view's keypoints (x, y, confidence)
+    std::vector<std::vector<float>> ankles;      // per frame, the 3D ankles (COCO 15, 16)
+    uint32_t frames_with_contact = 0;
+  };
+  auto run = [&](uint32_t foot_lock) {
+    octocap_session_config_t cfg;
+    octocap_session_config_init(&cfg);
+    cfg.layout = OCTOCAP_LAYOUT_COCO_17;
+    cfg.foot_lock = foot_lock;
+    cfg.worker_threads = 1;
+    testing::Session s = testing::make_session(calib.get(), cfg);
+    octocap_detector_config_t detector;
+    octocap_detector_config_init(&detector);
+    detector.mode = OCTOCAP_DETECT_CROP;
+    detector.threads = 1;
+    REQUIRE(octocap_session_set_detector(s.get(), &detector) == OCTOCAP_OK);
+    for (auto& v : videos) v.set(cv::CAP_PROP_POS_FRAMES, 0);
+    Run r;
+    for (int f = 0; f < 40; ++f) {
+      std::vector<cv::Mat> images;
+      const std::vector<octocap_image_t> views = read_views(videos, images);
+      REQUIRE(octocap_session_solve_images(s.get(), views.data(), 4, f * 16667) == OCTOCAP_OK);
+      std::vector<float> seen;
+      for (uint32_t v = 0; v < 4; ++v) {
+        uint32_t n = 0;
+        REQUIRE(octocap_session_detections(s.get(), v, nullptr, 0, &n) == OCTOCAP_OK);
+        std::vector<octocap_keypoint2d_t> k(n);
+        REQUIRE(octocap_session_detections(s.get(), v, k.data(), n, &n) == OCTOCAP_OK);
+        for (const auto& p : k) seen.insert(seen.end(), {p.x, p.y, p.confidence});
+      }
+      r.detections.push_back(std::move(seen));
+      octocap_frame_t* frame = nullptr;
+      REQUIRE(octocap_session_get_frame(s.get(), &frame) == OCTOCAP_OK);
+      octocap_person_t person;
+      person.struct_size = sizeof person;
+      if (octocap_frame_get_person(frame, 0, &person) == OCTOCAP_OK && person.foot_contacts != 0) ++r.frames_with_contact;
+      octocap_joint_t j[17];
+      uint32_t n = 0;
+      std::vector<float> ankles(6, NAN);
+      if (octocap_frame_get_keypoints3d(frame, 0, j, 17, &n) == OCTOCAP_OK)
+        for (int a = 0; a < 2; ++a)
+          if (j[15 + a].valid)
+            for (int d = 0; d < 3; ++d) ankles[3 * a + d] = j[15 + a].position[d];
+      r.ankles.push_back(std::move(ankles));
+      octocap_frame_release(frame);
+    }
+    return r;
+  };
+  const Run loose = run(0), locked = run(1);
+  // The lock did hold a foot here (else this test could not fail): some ankle differs between the runs.
+  double most_held_mm = 0;
+  for (size_t f = 0; f < loose.ankles.size(); ++f)
+    for (int i = 0; i < 6; ++i)
+      if (std::isfinite(loose.ankles[f][i]) && std::isfinite(locked.ankles[f][i]))
+        most_held_mm = std::max(most_held_mm, 1000.0 * std::abs(loose.ankles[f][i] - locked.ankles[f][i]));
+  INFO("frames with a foot planted " << locked.frames_with_contact << ", the lock moved an ankle by up to "
+                                     << most_held_mm << " mm");
+  REQUIRE(locked.frames_with_contact >= 10);
+  REQUIRE(most_held_mm > 1.0);
+  for (size_t f = 0; f < loose.detections.size(); ++f) {
+    INFO("frame " << f);
+    CHECK(loose.detections[f] == locked.detections[f]);  // the same crops, the same pictures: bit-equal keypoints
+  }
+}

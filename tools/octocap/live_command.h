@@ -18,7 +18,7 @@ struct LiveOptions {
   std::string filter = "oneeuro";
   bool quiet = false;
   OutputOptions out;
-  bool foot_lock = false;    // as octocap solve --foot-lock
+  bool foot_lock = true;     // as octocap solve --foot-lock / --no-foot-lock
   std::string people = "1";  // as octocap solve --people
   std::string quality = "governed";  // or "max" (octocap_live_quality_t)
   double target_fps = 0;             // 0: the slowest camera's rate

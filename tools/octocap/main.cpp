@@ -62,7 +62,7 @@ const CLI::Validator kTrcName(
     "TRC", "TRC file name");
 
 void add_foot_lock_flag(CLI::App* app, bool& foot_lock) {
-  app->add_flag("--foot-lock", foot_lock, "Hold planted feet still: a foot on the floor keeps its place while the solve's noise would make it skate (its ankle, knee and foot; contacts are reported either way)");
+  app->add_flag("--foot-lock,!--no-foot-lock", foot_lock, "Hold planted feet still (the default): a foot on the floor keeps its place while the solve's noise would make it skate (its ankle, knee and foot; contacts are reported either way); --no-foot-lock: joints as solved");
 }
 
 int main(int argc, char** argv) {

@@ -22,7 +22,7 @@ struct SolveOptions {
   unsigned start_frame = 0;
   double linger_s = 0.5;
   unsigned wait_subscribers = 0;
-  bool foot_lock = false;    // --foot-lock: planted feet held still
+  bool foot_lock = true;     // --no-foot-lock: joints as solved (planted feet are held by default)
   std::string people = "1";  // "auto" or N: several people, one TRC (and BVH) per person, a CSV with a person column
 };
 

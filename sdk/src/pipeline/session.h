@@ -53,8 +53,8 @@ struct SessionConfig {
   double filter_min_cutoff = 1.5;
   double filter_beta = 20.0;
   // Feet in contact with the floor are reported either way; with foot_lock their ankles are held while planted
-  // (rig/foot_lock.h: 3-5x less sliding, 1-3.5 mm more ankle error on a rolling foot).
-  bool foot_lock = false;
+  // (rig/foot_lock.h: 2-4x less sliding from pixels for +-0.2 mm MPJPE; docs/command-line.md has the figures).
+  bool foot_lock = true;
   unsigned threads = 0;
   int64_t first_frame_index = 0;  // frame numbers start here (a capture resumed mid-take keeps its numbering)
   // 1: one person (the one the views agree on, followed over time); N > 1: up to N people, associated across views
@@ -169,6 +169,8 @@ class Session {
 
   std::vector<std::vector<Person2D>> reprojected_people() const;
   const PersonState* state_of(uint32_t id) const;  // the person's state (the one person's when max_people is 1)
+  // The person's keypoints where they were measured, before foot_lock held any (NaN: not solved this frame).
+  std::vector<Eigen::Vector3d> measured_keypoints(const PersonResult& person) const;
   // Each solved person's every keypoint, where it was last seen, moved along with the person since (NaN: never seen).
   void remember_whole_people();
   std::map<uint32_t, std::vector<Eigen::Vector3d>> whole_people_;

@@ -12,20 +12,30 @@ namespace octocap::internal {
 void Session::remember_whole_people() {
   std::map<uint32_t, std::vector<Eigen::Vector3d>> kept;
   for (const PersonResult& person : frame_.people) {
-    std::vector<Eigen::Vector3d> whole(person.keypoints.size(), Eigen::Vector3d::Constant(NAN));
+    const std::vector<Eigen::Vector3d> now = measured_keypoints(person);
+    std::vector<Eigen::Vector3d> whole(now.size(), Eigen::Vector3d::Constant(NAN));
     if (auto it = whole_people_.find(person.id); it != whole_people_.end() && it->second.size() == whole.size())
       whole = std::move(it->second);
     // How far the person moved since the keypoints both frames have were seen: the ones this frame lacks move as much.
     Eigen::Vector3d shift = Eigen::Vector3d::Zero();
     int common = 0;
     for (size_t k = 0; k < whole.size(); ++k)
-      if (person.keypoints[k].valid && whole[k].allFinite()) shift += person.keypoints[k].position - whole[k], ++common;
+      if (now[k].allFinite() && whole[k].allFinite()) shift += now[k] - whole[k], ++common;
     if (common > 0) shift /= common;
-    for (size_t k = 0; k < whole.size(); ++k)
-      whole[k] = person.keypoints[k].valid ? person.keypoints[k].position : Eigen::Vector3d(whole[k] + shift);
+    for (size_t k = 0; k < whole.size(); ++k) whole[k] = now[k].allFinite() ? now[k] : Eigen::Vector3d(whole[k] + shift);
     kept[person.id] = std::move(whole);
   }
   whole_people_ = std::move(kept);  // someone no longer solved is no longer followed
+}
+
+std::vector<Eigen::Vector3d> Session::measured_keypoints(const PersonResult& person) const {
+  const PersonState* state = state_of(person.id);
+  const bool locked = state && state->lock_shift.size() == person.keypoints.size();
+  std::vector<Eigen::Vector3d> out(person.keypoints.size(), Eigen::Vector3d::Constant(NAN));
+  for (size_t k = 0; k < out.size(); ++k)
+    if (person.keypoints[k].valid)
+      out[k] = locked ? Eigen::Vector3d(person.keypoints[k].position - state->lock_shift[k]) : person.keypoints[k].position;
+  return out;
 }
 
 const Session::PersonState* Session::state_of(uint32_t id) const {
@@ -46,18 +56,14 @@ std::vector<std::vector<Person2D>> Session::reprojected_people() const {
   constexpr double kRemembered = 2 * Detector::kHintConfidence;
   for (const PersonResult& person : frame_.people) {
     const auto whole = whole_people_.find(person.id);
-    const PersonState* state = state_of(person.id);
-    const bool locked = state && state->lock_shift.size() == person.keypoints.size();
+    const std::vector<Eigen::Vector3d> measured = measured_keypoints(person);
     for (size_t v = 0; v < calib_.size(); ++v) {
       Person2D p(person.keypoints.size());
       for (size_t k = 0; k < person.keypoints.size(); ++k) {
         const bool valid = person.keypoints[k].valid;
         const bool remembered = whole != whole_people_.end() && k < whole->second.size() && whole->second[k].allFinite();
         if (!valid && !remembered) continue;
-        // Where the keypoint was measured: a planted foot's lock is taken back off (see PersonState::lock_shift).
-        const Eigen::Vector3d measured =
-            locked ? Eigen::Vector3d(person.keypoints[k].position - state->lock_shift[k]) : person.keypoints[k].position;
-        const Eigen::Vector2d px = calib_[v].project(valid ? measured : whole->second[k]);
+        const Eigen::Vector2d px = calib_[v].project(valid ? measured[k] : whole->second[k]);
         if (std::isfinite(px.x()) && std::isfinite(px.y())) p[k] = {px.x(), px.y(), valid ? 1.0 : kRemembered};
       }
       hints[v].push_back(std::move(p));
