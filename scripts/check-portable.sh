@@ -60,6 +60,7 @@ CALIB="$ROOT/.cache/pose2sim-0.4.15/Demo/calibration/Calib_qualisys.toml"
 mkdir -p "$CLEAN/data/videos" && cp "$VIDEOS"/cam0[1-4].mp4 "$CLEAN/data/videos/" && cp "$CALIB" "$CLEAN/data/"
 
 inside() { chroot "$CLEAN" env -i PATH=/usr/bin:/bin HOME=/root "$@"; }
+trc_rows() { inside sh -c "tail -n +6 $1 | grep -c '^[0-9]'"; }  # the rows after TRC's five header lines
 echo "== in a clean trixie root: $(inside cat /etc/debian_version), glibc $(inside ldd --version | head -1 | awk '{print $NF}')"
 for pkg in libopencv-core406 libonnxruntime1 libddsc0debian python3; do
   if inside dpkg-query -W "$pkg" >/dev/null 2>&1; then echo "check-portable: the clean root has $pkg" >&2; exit 1; fi
@@ -77,14 +78,14 @@ inside sh -c "$cd_opt bin/octocap solve --calibration share/octocap/sample/calib
 mpjpe=$(sed -n 's/.*MPJPE[^0-9]*\([0-9.]*\) mm.*/\1/p' /tmp/octocap-portable.log | head -1)
 [ -n "$mpjpe" ] && awk -v m="$mpjpe" 'BEGIN { exit !(m < 40) }' ||
   { echo "check-portable: the sample solved to an MPJPE of '${mpjpe}' mm (expected < 40)" >&2; exit 1; }
-frames=$(inside sh -c 'tail -n +6 /tmp/sample.trc | grep -c "^[0-9]"')  # the rows after TRC's five header lines
+frames=$(trc_rows /tmp/sample.trc)
 [ "$frames" -eq 90 ] || { echo "check-portable: sample.trc has $frames frames" >&2; exit 1; }
 
 # Both inference back ends the release carries (automatic picks OpenVINO on a CPU).
 for runtime in openvino onnxruntime; do
   inside sh -c "$cd_opt bin/octocap solve --images /data/videos --calibration /data/Calib_qualisys.toml \
     --output /tmp/videos.trc --rate 60 --frames 10 --runtime $runtime --quiet" | grep -E "keypoints solved|2D detection"
-  frames=$(inside sh -c 'tail -n +6 /tmp/videos.trc | grep -c "^[0-9]"')
+  frames=$(trc_rows /tmp/videos.trc)
   [ "$frames" -eq 10 ] || { echo "check-portable: $runtime: videos.trc has $frames frames (of 10)" >&2; exit 1; }
 done
 echo "check-portable: $(basename "$RELEASE") runs in a clean trixie root: sample MPJPE $mpjpe mm ($frames frames" \

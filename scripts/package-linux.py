@@ -43,6 +43,10 @@ def is_elf(path):
         return f.read(4) == b"\x7fELF"
 
 
+def elf_files(*dirs):
+    return [os.path.join(d, f) for d in dirs for f in sorted(os.listdir(d)) if is_elf(os.path.join(d, f))]
+
+
 def needed(path):
     """(name, resolved path) of everything the loader maps for path, as ldd resolves it; 'not found' is an error."""
     out = run("ldd", path)
@@ -98,7 +102,7 @@ def main():
     # Carry every library the loader maps that is not the system's, until nothing new appears (a carried library's
     # own needs are resolved on this machine, then carried too).
     carried = {}  # name -> (source path, Debian package)
-    todo = [os.path.join(d, f) for d in (bindir, lib) for f in sorted(os.listdir(d)) if is_elf(os.path.join(d, f))]
+    todo = elf_files(bindir, lib)
     seen = set()
     while todo:
         elf = todo.pop()
@@ -134,8 +138,7 @@ def main():
             f.write("%s\t%s\n" % (dep, carried[dep][1] or "(not a Debian package)"))
 
     shutil.copytree(os.path.join(src, "data/sample"), os.path.join(root, "share/octocap/sample"))
-    elves = [os.path.join(d, f) for d in (bindir, lib) for f in os.listdir(d) if is_elf(os.path.join(d, f))]
-    floor = glibc_floor(elves)
+    floor = glibc_floor(elf_files(bindir, lib))
     with open(os.path.join(root, "README.txt"), "w") as f:
         f.write("""octocap {v}, portable Linux x86_64 release
 

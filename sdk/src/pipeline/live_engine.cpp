@@ -325,6 +325,7 @@ void LiveEngine::solve_set(const std::vector<CapturedFrame>& frames, const std::
   const uint32_t pictures = static_cast<uint32_t>(std::count_if(views.begin(), views.end(), [](const ImageView& v) { return !absent(v); }));
   const uint32_t views_detected =
       detected && session_->detector() ? pictures - static_cast<uint32_t>(session_->detector()->timings().views_tracked) : 0;
+  const uint32_t views_in_set = static_cast<uint32_t>(std::count(present.begin(), present.end(), true));
   govern_after_set(static_cast<double>(t1 - t0) / 1000.0, static_cast<double>(t0 - oldest_grab) / 1000.0, t1);
   {
     const std::lock_guard<std::mutex> lock(mutex_);
@@ -332,10 +333,10 @@ void LiveEngine::solve_set(const std::vector<CapturedFrame>& frames, const std::
     latest_ = std::move(frame);
     ++latest_serial_;
     const uint64_t k = ++stats_.frame_sets;
-    if (std::find(present.begin(), present.end(), false) != present.end()) ++stats_.sets_incomplete;
+    if (views_in_set < present.size()) ++stats_.sets_incomplete;
     if (solved) ++stats_.frames_with_person;
     stats_.views_detected = views_detected;
-    stats_.views_in_set = static_cast<uint32_t>(std::count(present.begin(), present.end(), true));
+    stats_.views_in_set = views_in_set;
     const double latency = static_cast<double>(monotonic_us() - oldest_grab) / 1000.0;
     accumulate(stats_.capture_ms, static_cast<double>(t0 - oldest_grab) / 1000.0, k);
     accumulate(stats_.detect_ms, detect_ms, k);
